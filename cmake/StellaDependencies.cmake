@@ -1,0 +1,89 @@
+# Finds every third-party library stella uses. Each comes from a Debian 12 package; when one is
+# missing, configuration stops with the name of the package to install (tools/install-deps
+# installs them all).
+
+function(stella_require found what package)
+  if(NOT ${found})
+    message(FATAL_ERROR "stella needs ${what}, which was not found.\n"
+                        "Install the Debian package '${package}' (or run tools/install-deps).")
+  endif()
+endfunction()
+
+find_package(Eigen3 3.4 QUIET NO_MODULE)
+stella_require(Eigen3_FOUND "Eigen 3.4" libeigen3-dev)
+
+find_package(fmt QUIET)
+stella_require(fmt_FOUND "fmt" libfmt-dev)
+
+find_package(CLI11 QUIET)
+if(NOT CLI11_FOUND)
+  find_path(CLI11_INCLUDE_DIR CLI/CLI.hpp)
+  if(CLI11_INCLUDE_DIR)
+    add_library(CLI11::CLI11 INTERFACE IMPORTED)
+    set_target_properties(CLI11::CLI11 PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${CLI11_INCLUDE_DIR}")
+    set(CLI11_FOUND TRUE)
+  endif()
+endif()
+stella_require(CLI11_FOUND "CLI11" libcli11-dev)
+
+find_package(GTest QUIET)
+stella_require(GTest_FOUND "GoogleTest" libgtest-dev)
+
+find_package(HDF5 QUIET COMPONENTS C)
+stella_require(HDF5_FOUND "HDF5" libhdf5-dev)
+
+find_path(MED_INCLUDE_DIR med.h PATH_SUFFIXES med)
+find_library(MED_LIBRARY NAMES medC)
+if(MED_INCLUDE_DIR AND MED_LIBRARY)
+  add_library(MED::medC UNKNOWN IMPORTED)
+  set_target_properties(MED::medC PROPERTIES IMPORTED_LOCATION "${MED_LIBRARY}"
+                        INTERFACE_INCLUDE_DIRECTORIES "${MED_INCLUDE_DIR};${HDF5_INCLUDE_DIRS}"
+                        INTERFACE_LINK_LIBRARIES "${HDF5_C_LIBRARIES}")
+  set(MED_FOUND TRUE)
+endif()
+stella_require(MED_FOUND "the MED library (libmedC)" libmedc-dev)
+
+find_path(MUMPS_INCLUDE_DIR dmumps_c.h)
+find_library(MUMPS_D_LIBRARY NAMES dmumps_seq dmumps)
+find_library(MUMPS_COMMON_LIBRARY NAMES mumps_common_seq mumps_common)
+find_library(MUMPS_PORD_LIBRARY NAMES pord_seq pord)
+find_library(MUMPS_MPISEQ_LIBRARY NAMES mpiseq_seq mpiseq)
+if(MUMPS_INCLUDE_DIR AND MUMPS_D_LIBRARY AND MUMPS_COMMON_LIBRARY)
+  add_library(MUMPS::dmumps INTERFACE IMPORTED)
+  set(_mumps_libs "${MUMPS_D_LIBRARY};${MUMPS_COMMON_LIBRARY}")
+  foreach(_lib MUMPS_PORD_LIBRARY MUMPS_MPISEQ_LIBRARY)
+    if(${_lib})
+      list(APPEND _mumps_libs "${${_lib}}")
+    endif()
+  endforeach()
+  set_target_properties(MUMPS::dmumps PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${MUMPS_INCLUDE_DIR}"
+                        INTERFACE_LINK_LIBRARIES "${_mumps_libs}")
+  set(MUMPS_FOUND TRUE)
+endif()
+stella_require(MUMPS_FOUND "sequential MUMPS" libmumps-seq-dev)
+
+find_path(SUITESPARSE_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse)
+find_library(CHOLMOD_LIBRARY cholmod)
+find_library(UMFPACK_LIBRARY umfpack)
+find_library(SUITESPARSE_CONFIG_LIBRARY suitesparseconfig)
+if(SUITESPARSE_INCLUDE_DIR AND CHOLMOD_LIBRARY AND UMFPACK_LIBRARY)
+  add_library(SuiteSparse::solvers INTERFACE IMPORTED)
+  set_target_properties(SuiteSparse::solvers PROPERTIES
+                        INTERFACE_INCLUDE_DIRECTORIES "${SUITESPARSE_INCLUDE_DIR}"
+                        INTERFACE_LINK_LIBRARIES "${CHOLMOD_LIBRARY};${UMFPACK_LIBRARY};${SUITESPARSE_CONFIG_LIBRARY}")
+  set(SUITESPARSE_FOUND TRUE)
+endif()
+stella_require(SUITESPARSE_FOUND "SuiteSparse (CHOLMOD, UMFPACK)" libsuitesparse-dev)
+
+if(STELLA_BENCHMARKS)
+  find_package(benchmark QUIET)
+  stella_require(benchmark_FOUND "Google Benchmark" libbenchmark-dev)
+endif()
+
+# Python with matplotlib, h5py and meshio: Debian's interpreter, never a user's own one.
+find_program(STELLA_PYTHON NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
+if(NOT STELLA_PYTHON)
+  find_program(STELLA_PYTHON python3)
+endif()
+find_program(GMSH_PROGRAM gmsh)
+stella_require(GMSH_PROGRAM "Gmsh" gmsh)

@@ -1,0 +1,103 @@
+#pragma once
+// One run of one or more command files: the units (files) the export declares, the message
+// and result files, the concepts made so far, the diagnostics counts, timings and test counts.
+// Implements CommandHandler: each command call is validated against the catalogue, echoed
+// with every keyword to the message file under its file:line, executed by its operator, and
+// timed (DESIGN §2).
+
+#include "interpreter/CommandHandler.hpp"
+#include "interpreter/Diagnostics.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace stella {
+
+class Catalog;
+
+struct SessionOptions {
+  bool executeOperators = true;  // false for `stella check`: validate only
+  bool referenceOnly = false;    // --reference-only: VALE_CALC lines are information
+  std::filesystem::path workDirectory = ".";
+};
+
+// Counts that decide the job diagnostic.
+struct SessionCounts {
+  int alarms = 0;
+  int testsOk = 0;
+  int testsNook = 0;
+  FailureKind failure = FailureKind::None; // the first fatal failure, if any
+};
+
+struct CommandTiming {
+  std::string command;
+  std::string location; // file:line
+  double seconds = 0.0;
+};
+
+class Session : public CommandHandler, public DiagnosticSink {
+public:
+  Session(const Catalog& catalog, std::ostream& message, std::ostream& result, SessionOptions options);
+  ~Session() override;
+
+  // Declared units: unit number -> path of the file (in the work directory). Unit 6 is the
+  // message file, unit 8 the result file, unit 80 the MED result by convention.
+  void declareUnit(int unit, std::filesystem::path path);
+  // The path for a unit; throws UserError (UNIT_1) naming the unit and the declared ones when
+  // the unit is unknown and `mustExist`.
+  std::filesystem::path unitPath(int unit, const SourceLocation& at, bool forReading) const;
+  const std::map<int, std::filesystem::path>& units() const { return units_; }
+  // Units a command opened (the export's data files the study never opened get an alarm only
+  // when they are also missing).
+  const std::vector<int>& openedUnits() const { return opened_; }
+
+  std::ostream& message() { return message_; }
+  std::ostream& result() { return result_; }
+  const SessionOptions& options() const { return options_; }
+  const Catalog& catalog() const { return catalog_; }
+
+  // DiagnosticSink: writes to the message file in code_aster's framed style and counts.
+  void report(const Diagnostic& d) override;
+  // TEST_RESU / TEST_TABLE record each OK/NOOK line here.
+  void recordTest(bool ok);
+  void noteFailure(FailureKind kind);
+
+  const SessionCounts& counts() const { return counts_; }
+  const std::vector<CommandTiming>& timings() const { return timings_; }
+
+  // CommandHandler
+  Value callCommand(const std::string& command, const CallArguments& args, const std::string& target) override;
+  Value conceptAttribute(const std::shared_ptr<Concept>& concept, const std::string& name,
+                         const SourceLocation& at) override;
+  bool finished() const override { return finished_; }
+  void markFinished() { finished_ = true; }
+
+  // Every concept made so far, by name (the last one of a name wins).
+  const std::map<std::string, std::shared_ptr<Concept>>& concepts() const { return concepts_; }
+
+  // Called by operators that keep results after a failure, so the message file can say where
+  // they are.
+  void noteKeptResult(const std::string& description) { keptResults_.push_back(description); }
+  const std::vector<std::string>& keptResults() const { return keptResults_; }
+
+private:
+  const Catalog& catalog_;
+  std::ostream& message_;
+  std::ostream& result_;
+  SessionOptions options_;
+  std::map<int, std::filesystem::path> units_;
+  mutable std::vector<int> opened_;
+  SessionCounts counts_;
+  std::vector<CommandTiming> timings_;
+  std::map<std::string, std::shared_ptr<Concept>> concepts_;
+  std::vector<std::string> keptResults_;
+  bool finished_ = false;
+  int commandCount_ = 0;
+};
+
+} // namespace stella
