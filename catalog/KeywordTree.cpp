@@ -91,13 +91,13 @@ std::vector<std::int64_t> KeywordTree::integers(const std::string& name) const {
   return out;
 }
 
-std::shared_ptr<Concept> KeywordTree::concept(const std::string& name) const {
+std::shared_ptr<Concept> KeywordTree::conceptValue(const std::string& name) const {
   const Value& v = value(name);
   STELLA_ASSERT(v.isConcept(), "keyword " + name + " is not a concept");
   return v.asConcept();
 }
 
-std::vector<std::shared_ptr<Concept>> KeywordTree::concepts(const std::string& name) const {
+std::vector<std::shared_ptr<Concept>> KeywordTree::conceptValues(const std::string& name) const {
   std::vector<std::shared_ptr<Concept>> out;
   if (const SimpleKeyword* k = simple(name)) {
     for (const auto& v : k->values) {

@@ -57,8 +57,8 @@ public:
   std::vector<std::string> texts(const std::string& name) const;
   std::vector<double> reals(const std::string& name) const;
   std::vector<std::int64_t> integers(const std::string& name) const;
-  std::shared_ptr<Concept> concept(const std::string& name) const;
-  std::vector<std::shared_ptr<Concept>> concepts(const std::string& name) const;
+  std::shared_ptr<Concept> conceptValue(const std::string& name) const;
+  std::vector<std::shared_ptr<Concept>> conceptValues(const std::string& name) const;
   const Value& value(const std::string& name) const; // the first value
   // With a fallback when absent.
   std::string textOr(const std::string& name, const std::string& fallback) const;

@@ -22,7 +22,7 @@ public:
 
   // `obj.NAME` where obj is a concept (e.g. `TAB.EXTR_TABLE`, `RES.LIST_PARA`). Throws
   // UserError when the concept has no such attribute.
-  virtual Value conceptAttribute(const std::shared_ptr<Concept>& concept, const std::string& name,
+  virtual Value conceptAttribute(const std::shared_ptr<Concept>& object, const std::string& name,
                                  const SourceLocation& at) = 0;
 
   // Called when FIN() has been executed; text after it is ignored.
