@@ -2,7 +2,7 @@
 add_library(stella_options INTERFACE)
 target_compile_options(stella_options INTERFACE -Wall -Wextra -Wpedantic -Wshadow
                        -Wnon-virtual-dtor -Wold-style-cast -Wcast-align -Wunused
-                       -Woverloaded-virtual -Wnull-dereference -Wimplicit-fallthrough)
+                       -Woverloaded-virtual -Wimplicit-fallthrough)
 if(STELLA_WERROR)
   target_compile_options(stella_options INTERFACE -Werror)
 endif()
