@@ -43,22 +43,30 @@ struct CellTypeInfo {
 };
 
 inline constexpr std::array<CellTypeInfo, cellTypeCount> cellTypeTable{{
-    {CellType::POI1, "POI1", 1, 0, false},      {CellType::SEG2, "SEG2", 2, 1, false},
-    {CellType::SEG3, "SEG3", 3, 1, true},       {CellType::TRIA3, "TRIA3", 3, 2, false},
-    {CellType::TRIA6, "TRIA6", 6, 2, true},     {CellType::TRIA7, "TRIA7", 7, 2, true},
-    {CellType::QUAD4, "QUAD4", 4, 2, false},    {CellType::QUAD8, "QUAD8", 8, 2, true},
-    {CellType::QUAD9, "QUAD9", 9, 2, true},     {CellType::TETRA4, "TETRA4", 4, 3, false},
+    {CellType::POI1, "POI1", 1, 0, false},       {CellType::SEG2, "SEG2", 2, 1, false},
+    {CellType::SEG3, "SEG3", 3, 1, true},        {CellType::TRIA3, "TRIA3", 3, 2, false},
+    {CellType::TRIA6, "TRIA6", 6, 2, true},      {CellType::TRIA7, "TRIA7", 7, 2, true},
+    {CellType::QUAD4, "QUAD4", 4, 2, false},     {CellType::QUAD8, "QUAD8", 8, 2, true},
+    {CellType::QUAD9, "QUAD9", 9, 2, true},      {CellType::TETRA4, "TETRA4", 4, 3, false},
     {CellType::TETRA10, "TETRA10", 10, 3, true}, {CellType::PENTA6, "PENTA6", 6, 3, false},
     {CellType::PENTA15, "PENTA15", 15, 3, true}, {CellType::PENTA18, "PENTA18", 18, 3, true},
-    {CellType::PYRAM5, "PYRAM5", 5, 3, false},  {CellType::PYRAM13, "PYRAM13", 13, 3, true},
-    {CellType::HEXA8, "HEXA8", 8, 3, false},    {CellType::HEXA20, "HEXA20", 20, 3, true},
-    {CellType::HEXA27, "HEXA27", 27, 3, true},  {CellType::SEG4, "SEG4", 4, 1, true},
+    {CellType::PYRAM5, "PYRAM5", 5, 3, false},   {CellType::PYRAM13, "PYRAM13", 13, 3, true},
+    {CellType::HEXA8, "HEXA8", 8, 3, false},     {CellType::HEXA20, "HEXA20", 20, 3, true},
+    {CellType::HEXA27, "HEXA27", 27, 3, true},   {CellType::SEG4, "SEG4", 4, 1, true},
 }};
 
-constexpr const CellTypeInfo& info(CellType t) { return cellTypeTable[static_cast<std::size_t>(t)]; }
-constexpr int nodeCount(CellType t) { return info(t).nodeCount; }
-constexpr int dimension(CellType t) { return info(t).dimension; }
-constexpr std::string_view name(CellType t) { return info(t).name; }
+constexpr const CellTypeInfo& info(CellType t) {
+  return cellTypeTable[static_cast<std::size_t>(t)];
+}
+constexpr int nodeCount(CellType t) {
+  return info(t).nodeCount;
+}
+constexpr int dimension(CellType t) {
+  return info(t).dimension;
+}
+constexpr std::string_view name(CellType t) {
+  return info(t).name;
+}
 
 inline std::optional<CellType> cellTypeFromName(std::string_view n) {
   for (const auto& i : cellTypeTable) {
