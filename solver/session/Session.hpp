@@ -72,7 +72,7 @@ public:
 
   // CommandHandler
   Value callCommand(const std::string& command, const CallArguments& args, const std::string& target) override;
-  Value conceptAttribute(const std::shared_ptr<Concept>& concept, const std::string& name,
+  Value conceptAttribute(const std::shared_ptr<Concept>& object, const std::string& name,
                          const SourceLocation& at) override;
   bool finished() const override { return finished_; }
   void markFinished() { finished_ = true; }

@@ -1,0 +1,285 @@
+#include "BatchJob.hpp"
+
+#include "TeeStream.hpp"
+#include "catalog/Catalog.hpp"
+#include "interpreter/Interpreter.hpp"
+#include "solver/session/Session.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <ctime>
+#include <fmt/format.h>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <unistd.h>
+
+namespace stella {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// What a run needs, whether it came from an export or from the command line.
+struct JobSpec {
+  std::vector<fs::path> commandFiles;
+  struct DataFile {
+    int unit;
+    fs::path source;
+    std::string origin; // "study.export:5" or "--unit 20=..."
+    bool directory;
+  };
+  std::vector<DataFile> data;
+  std::map<int, fs::path> results; // unit -> destination
+  bool isTestcase = false;
+  std::vector<std::string> expectedDiagnostics;
+  bool saveBase = false;
+};
+
+fs::path makeWorkDirectory(const RunOptions& options) {
+  if (!options.workDirectory.empty()) {
+    fs::remove_all(options.workDirectory);
+    fs::create_directories(options.workDirectory);
+    return fs::absolute(options.workDirectory);
+  }
+  std::string pattern = (fs::temp_directory_path() / "stella-run-XXXXXX").string();
+  if (mkdtemp(pattern.data()) == nullptr) {
+    throw UserError(Diagnostic::fatal("RUN_1", "cannot create a work directory in " +
+                                                   fs::temp_directory_path().string())
+                        .withNote("set TMPDIR to a writable directory or pass --work-dir"));
+  }
+  return fs::path(pattern);
+}
+
+std::string hostName() {
+  char buffer[256] = {};
+  if (gethostname(buffer, sizeof(buffer) - 1) != 0) {
+    return "unknown";
+  }
+  return buffer;
+}
+
+std::string now() {
+  std::time_t t = std::time(nullptr);
+  char buffer[64] = {};
+  std::strftime(buffer, sizeof(buffer), "%Y-%m-%d %H:%M:%S", std::localtime(&t));
+  return buffer;
+}
+
+void writeHeader(std::ostream& mess, const RunOptions& options, const fs::path& work) {
+  mess << std::string(72, '=') << "\n"
+       << "-- STELLA -- VERSION " << STELLA_VERSION << "\n"
+       << "   date          : " << now() << "\n"
+       << "   host          : " << hostName() << "\n"
+       << "   command line  : " << options.commandLine << "\n"
+       << "   work directory: " << work.string() << "\n"
+       << std::string(72, '=') << "\n";
+}
+
+void writeTimingSummary(std::ostream& mess, const Session& session) {
+  const auto& timings = session.timings();
+  if (timings.empty()) {
+    return;
+  }
+  double total = 0.0;
+  for (const auto& t : timings) {
+    total += t.seconds;
+  }
+  mess << "\n  Time per command (elapsed seconds)\n"
+       << fmt::format("  {:<5} {:<22} {:<40} {:>10} {:>7}\n", "#", "command", "location", "seconds", "share");
+  int n = 0;
+  for (const auto& t : timings) {
+    ++n;
+    double share = total > 0 ? 100.0 * t.seconds / total : 0.0;
+    mess << fmt::format("  {:<5} {:<22} {:<40} {:>10.3f} {:>6.1f}%\n", n, t.command, t.location, t.seconds, share);
+  }
+  mess << fmt::format("  {:<5} {:<22} {:<40} {:>10.3f}\n", "", "total", "", total);
+}
+
+// Copies the result units back; returns the files written.
+std::vector<fs::path> copyResults(const JobSpec& spec, const fs::path& work, std::ostream& mess) {
+  std::vector<fs::path> written;
+  for (const auto& [unit, destination] : spec.results) {
+    if (unit == 6 || unit == 8) {
+      continue; // still open: copied when the run is over
+    }
+    fs::path produced = work / ("fort." + std::to_string(unit));
+    if (!fs::exists(produced)) {
+      mess << fmt::format("  unit {} ({}) was not written by the study\n", unit, destination.string());
+      continue;
+    }
+    fs::create_directories(destination.parent_path());
+    fs::copy_file(produced, destination, fs::copy_options::overwrite_existing);
+    written.push_back(destination);
+  }
+  return written;
+}
+
+JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
+  JobResult job;
+  fs::path work = makeWorkDirectory(options);
+  job.workDirectory = work;
+
+  std::ofstream messFile(work / "fort.6");
+  std::ofstream resuFile(work / "fort.8");
+  TeeBuffer tee(messFile.rdbuf(), options.echo ? std::cout.rdbuf() : nullptr);
+  std::ostream mess(&tee);
+  writeHeader(mess, options, work);
+
+  SessionOptions sessionOptions;
+  sessionOptions.referenceOnly = options.referenceOnly;
+  sessionOptions.workDirectory = work;
+
+  std::vector<const JobSpec::DataFile*> missing;
+  std::map<int, fs::path> unitPaths;
+  for (const auto& d : spec.data) {
+    fs::path target = work / ("fort." + std::to_string(d.unit));
+    if (fs::exists(d.source)) {
+      if (d.directory) {
+        fs::copy(d.source, target, fs::copy_options::recursive);
+      } else {
+        fs::copy_file(d.source, target, fs::copy_options::overwrite_existing);
+      }
+    } else {
+      missing.push_back(&d);
+    }
+    unitPaths[d.unit] = target;
+  }
+
+  std::unique_ptr<Session> session;
+  try {
+    const Catalog& catalog = Catalog::builtin();
+    session = std::make_unique<Session>(catalog, mess, resuFile, sessionOptions);
+    for (const auto& [unit, path] : unitPaths) {
+      session->declareUnit(unit, path);
+    }
+    Interpreter interpreter(*session, *session);
+    for (const auto& name : catalog.commandNames()) {
+      interpreter.defineCommand(name);
+    }
+    for (const auto& comm : spec.commandFiles) {
+      mess << "\n  # Command file: " << comm.string() << "\n";
+      RunStatus status = interpreter.run(SourceFile::load(comm.string()));
+      if (status == RunStatus::SyntaxError || status == RunStatus::Failed) {
+        break;
+      }
+    }
+  } catch (const UserError& e) {
+    if (session) {
+      for (const auto& d : e.diagnostics()) {
+        session->report(d);
+      }
+    } else {
+      for (const auto& d : e.diagnostics()) {
+        mess << formatDiagnostic(d);
+      }
+    }
+  } catch (const std::exception& e) {
+    mess << " ! <F> <INTERNAL_2> internal error in stella: " << e.what() << "\n"
+         << "   this is a bug in stella, not in your study: please report it with the command file\n";
+    job.diagnostic = JobDiagnostic::AbnormalAbort;
+  }
+
+  SessionCounts counts;
+  if (session) {
+    for (const auto* d : missing) {
+      const auto& opened = session->openedUnits();
+      if (std::find(opened.begin(), opened.end(), d->unit) == opened.end()) {
+        session->report(Diagnostic::alarm("RUN_2", fmt::format("the data file {} declared for unit {} ({}) does not "
+                                                               "exist; the study never opened it",
+                                                               d->source.string(), d->unit, d->origin)));
+      }
+    }
+    if (spec.saveBase) {
+      session->report(Diagnostic::alarm("RUN_3", "saving the concept database (R base) is not implemented yet; the "
+                                                 "other result files are written"));
+    }
+    writeTimingSummary(mess, *session);
+    counts = session->counts();
+    if (counts.failure != FailureKind::None) {
+      mess << "\n  The run stopped on an error. Every result computed before it is kept";
+      for (const auto& kept : session->keptResults()) {
+        mess << "\n    " << kept;
+      }
+      mess << "\n  and the result files declared for the run are copied back.\n";
+    }
+  } else {
+    counts.failure = FailureKind::Abort;
+  }
+  JobDiagnostic diagnostic = diagnose(counts, spec.isTestcase);
+  if (job.diagnostic == JobDiagnostic::AbnormalAbort && session && counts.failure == FailureKind::None) {
+    diagnostic = JobDiagnostic::AbnormalAbort;
+  }
+  diagnostic = applyExpected(diagnostic, spec.expectedDiagnostics);
+  job.diagnostic = diagnostic;
+
+  mess << "\n";
+  std::vector<fs::path> written = copyResults(spec, work, mess);
+  mess << "\n" << diagnosticFrame(diagnostic);
+  mess.flush();
+  messFile.close();
+  resuFile.close();
+  // The message and result files are complete only now.
+  for (int unit : {6, 8}) {
+    auto it = spec.results.find(unit);
+    if (it != spec.results.end()) {
+      fs::create_directories(it->second.parent_path());
+      fs::copy_file(work / ("fort." + std::to_string(unit)), it->second, fs::copy_options::overwrite_existing);
+      written.push_back(it->second);
+    }
+  }
+  job.resultFiles = written;
+  bool failed = exitCode(diagnostic) != 0;
+  if (!options.keepWorkDirectory && !failed && options.workDirectory.empty()) {
+    fs::remove_all(work);
+    job.workDirectory.clear();
+  }
+  return job;
+}
+
+} // namespace
+
+JobResult runExport(const Export& study, const RunOptions& options) {
+  JobSpec spec;
+  fs::path outputBase = options.outputDirectory.empty() ? study.file.parent_path() : options.outputDirectory;
+  for (const auto& e : study.entries) {
+    std::string origin = fmt::format("{}:{}", study.file.filename().string(), e.line);
+    if (e.type == "comm" && e.data) {
+      spec.commandFiles.push_back(e.path);
+      continue;
+    }
+    if (e.type == "base" && e.result) {
+      spec.saveBase = true;
+      continue;
+    }
+    if (e.data && e.unit != 0) {
+      spec.data.push_back({e.unit, e.path, origin, e.directory});
+    }
+    if (e.result && e.unit != 0) {
+      fs::path p(e.pathAsWritten);
+      spec.results[e.unit] = p.is_absolute() ? p : (outputBase / p).lexically_normal();
+    }
+  }
+  spec.isTestcase = study.hasParameter("testlist");
+  spec.expectedDiagnostics = study.parameter("expected_diag");
+  return runSpec(spec, options);
+}
+
+JobResult runCommandFile(const fs::path& commandFile, const std::map<int, fs::path>& units,
+                         const RunOptions& options) {
+  JobSpec spec;
+  fs::path comm = fs::absolute(commandFile);
+  spec.commandFiles.push_back(comm);
+  for (const auto& [unit, path] : units) {
+    spec.data.push_back({unit, fs::absolute(path), fmt::format("--unit {}={}", unit, path.string()), false});
+  }
+  fs::path outputBase = options.outputDirectory.empty() ? comm.parent_path() : options.outputDirectory;
+  std::string stem = comm.stem().string();
+  spec.results[6] = outputBase / (stem + ".mess");
+  spec.results[8] = outputBase / (stem + ".resu");
+  spec.results[80] = outputBase / (stem + ".rmed");
+  return runSpec(spec, options);
+}
+
+} // namespace stella

@@ -1,0 +1,184 @@
+#include "Session.hpp"
+
+#include "OperatorRegistry.hpp"
+#include "catalog/Catalog.hpp"
+
+#include <ctime>
+#include <fmt/format.h>
+#include <sstream>
+
+namespace stella {
+
+namespace {
+
+constexpr int frameWidth = 80;
+
+std::string frameLine(const std::string& text) {
+  std::string line = " ! " + text;
+  if (line.size() < frameWidth - 1) {
+    line.append(frameWidth - 1 - line.size(), ' ');
+  }
+  return line + "!\n";
+}
+
+std::string frameRule() { return " !" + std::string(frameWidth - 3, '-') + "!\n"; }
+
+// The located diagnostic as lines inside a code_aster-style frame, so that tools reading the
+// message file (regexes on "<A>", "<F>"...) and users see the same thing.
+std::string framed(const Diagnostic& d) {
+  std::string out = frameRule();
+  out += frameLine(std::string(severityTag(d.severity)) + " <" + d.id + ">");
+  std::istringstream body(formatDiagnostic(d));
+  std::string line;
+  while (std::getline(body, line)) {
+    out += frameLine(line);
+  }
+  out += frameRule();
+  return out;
+}
+
+// Diagnostics thrown by the catalogue's validation are syntax errors of the command file.
+UserError asSyntax(const UserError& e) {
+  std::vector<Diagnostic> ds = e.diagnostics();
+  for (auto& d : ds) {
+    if (d.severity == Severity::Fatal && d.kind == FailureKind::Error) {
+      d.kind = FailureKind::Syntax;
+    }
+  }
+  return UserError(std::move(ds));
+}
+
+std::string callHeader(const std::string& target, const std::string& command) {
+  return target.empty() ? command + "(" : target + " = " + command + "(";
+}
+
+} // namespace
+
+Session::Session(const Catalog& catalog, std::ostream& message, std::ostream& result, SessionOptions options)
+    : catalog_(catalog), message_(message), result_(result), options_(std::move(options)) {}
+
+Session::~Session() = default;
+
+void Session::declareUnit(int unit, std::filesystem::path path) { units_[unit] = std::move(path); }
+
+std::filesystem::path Session::unitPath(int unit, const SourceLocation& at, bool forReading) const {
+  auto it = units_.find(unit);
+  std::filesystem::path path =
+      it != units_.end() ? it->second : options_.workDirectory / ("fort." + std::to_string(unit));
+  if (forReading) {
+    if (!std::filesystem::exists(path)) {
+      std::string declared;
+      for (const auto& [u, p] : units_) {
+        declared += (declared.empty() ? "" : ", ") + std::to_string(u) + " (" + p.filename().string() + ")";
+      }
+      throw UserError(Diagnostic::fatal("UNIT_1", fmt::format("unit {} has no file to read", unit), at)
+                          .withNote(declared.empty() ? "no data unit is declared"
+                                                     : "declared units: " + declared)
+                          .withNote(fmt::format("declare it in the export (F mmed mesh.med D {}) or with "
+                                                "`stella run FILE.comm --unit {}=FILE`",
+                                                unit, unit)));
+    }
+  }
+  opened_.push_back(unit);
+  return path;
+}
+
+void Session::report(const Diagnostic& d) {
+  if (d.severity == Severity::Info) {
+    message_ << d.message << '\n';
+    return;
+  }
+  if (d.severity == Severity::Alarm) {
+    ++counts_.alarms;
+  } else {
+    noteFailure(d.kind);
+  }
+  message_ << framed(d);
+}
+
+void Session::recordTest(bool ok) { ++(ok ? counts_.testsOk : counts_.testsNook); }
+
+void Session::noteFailure(FailureKind kind) {
+  if (counts_.failure == FailureKind::None && kind != FailureKind::None) {
+    counts_.failure = kind;
+  }
+}
+
+Value Session::callCommand(const std::string& command, const CallArguments& args, const std::string& target) {
+  ValidatedCall call;
+  try {
+    call = catalog_.validate(command, args);
+  } catch (const UserError& e) {
+    throw asSyntax(e);
+  }
+  OperatorFunction op = OperatorRegistry::instance().find(command);
+  if (op == nullptr) {
+    throw UserError(Diagnostic::fatal("COMMAND_1", "the command " + command + " is not implemented yet",
+                                      args.callLocation)
+                        .withNote("the catalogue knows it, so `stella check` validates it, but stella cannot "
+                                  "run it yet"));
+  }
+
+  ++commandCount_;
+  const std::string location = args.callLocation.str();
+  message_ << "\n  # " << std::string(70, '-') << "\n"
+           << fmt::format("  # Command #{:04d}   {}   ({})\n", commandCount_, command, location);
+  if (!call.resultType.empty()) {
+    message_ << "  # Result: concept of type " << call.resultType << "\n";
+  }
+  message_ << "  " << callHeader(target, command) << "\n" << call.keywords.format(6) << "  )\n" << std::flush;
+
+  std::shared_ptr<Concept> made;
+  Value result;
+  auto wallStart = std::chrono::steady_clock::now();
+  std::clock_t cpuStart = std::clock();
+  if (options_.executeOperators) {
+    const std::string resultName = call.reused ? call.reused->name : target;
+    OperatorCall opCall{*this, command, call.keywords, resultName, call.resultType, call.reused, args.callLocation};
+    try {
+      result = op(opCall);
+    } catch (const UserError&) {
+      throw;
+    } catch (const InternalError& e) {
+      throw UserError(Diagnostic::fatal("INTERNAL_1", "internal error in stella while running " + command,
+                                        args.callLocation)
+                          .withNote(e.what())
+                          .withNote("this is a bug in stella, not in your study: please report it with the "
+                                    "command file"));
+    } catch (const std::bad_alloc&) {
+      throw UserError(Diagnostic::fatal("MEMORY_1", "not enough memory to run " + command, args.callLocation)
+                          .withNote("use a coarser mesh or a machine with more memory"));
+    }
+  } else if (!call.resultType.empty()) {
+    auto c = std::make_shared<Concept>();
+    c->name = call.reused ? call.reused->name : target;
+    c->type = call.resultType;
+    c->definedAt = args.callLocation;
+    result = call.reused ? Value(call.reused) : Value(c);
+  }
+  double cpu = static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC;
+  double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
+  if (result.isConcept()) {
+    made = result.asConcept();
+    if (made->name.empty()) {
+      made->name = target;
+    }
+    concepts_[made->name] = made;
+  }
+  timings_.push_back({command, location, wall});
+  message_ << fmt::format("  # End of command #{:04d}   cpu: {:.2f} s   elapsed: {:.2f} s\n", commandCount_, cpu,
+                          wall)
+           << std::flush;
+  return result;
+}
+
+Value Session::conceptAttribute(const std::shared_ptr<Concept>& object, const std::string& name,
+                                const SourceLocation& at) {
+  throw UserError(Diagnostic::fatal("CONCEPT_1",
+                                    "the concept " + object->name + " (" + object->type + ") has no attribute '" +
+                                        name + "'",
+                                    at)
+                      .withNote("concept methods such as EXTR_TABLE are not implemented yet"));
+}
+
+} // namespace stella

@@ -1,0 +1,44 @@
+#pragma once
+// The subcommands of the `stella` executable, one function each.
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace stella::cli {
+
+struct RunArguments {
+  std::string target; // .export or .comm
+  std::vector<std::string> units; // "20=mesh.med"
+  std::string workDirectory;
+  std::string outputDirectory;
+  bool referenceOnly = false;
+  bool keepWork = false;
+  bool quiet = false;
+  std::string commandLine;
+};
+int run(const RunArguments& args);
+
+struct CheckArguments {
+  std::string file;
+  bool syntaxOnly = false;
+  bool dumpTokens = false;
+  bool dumpAst = false;
+};
+int check(const CheckArguments& args);
+
+int format(const std::string& file, bool inPlace);
+
+struct CatalogArguments {
+  std::string command;
+  bool json = false;
+  bool list = false;
+};
+int catalog(const CatalogArguments& args);
+
+// Exit codes shared by every subcommand (documented in --help and the README).
+inline constexpr int exitUsage = 64;
+inline constexpr int exitInput = 65; // a file that cannot be read or is malformed
+
+} // namespace stella::cli

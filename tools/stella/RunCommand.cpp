@@ -1,0 +1,81 @@
+// `stella run`: a batch run from a .export, or a quick run of a .comm with --unit options.
+
+#include "Commands.hpp"
+#include "solver/job/BatchJob.hpp"
+
+#include <charconv>
+#include <iostream>
+
+namespace stella::cli {
+
+namespace {
+
+// "20=mesh.med" -> (20, mesh.med); returns false when malformed.
+bool parseUnit(const std::string& text, int& unit, std::string& path) {
+  auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size()) {
+    return false;
+  }
+  auto [ptr, ec] = std::from_chars(text.data(), text.data() + eq, unit);
+  if (ec != std::errc() || ptr != text.data() + eq || unit < 1 || unit > 99 || unit == 6 || unit == 15) {
+    return false;
+  }
+  path = text.substr(eq + 1);
+  return true;
+}
+
+void printOutcome(const JobResult& job) {
+  std::cerr << "stella: diagnostic " << diagnosticWord(job.diagnostic) << "\n";
+  for (const auto& f : job.resultFiles) {
+    std::cerr << "stella: wrote " << f.string() << "\n";
+  }
+  if (!job.workDirectory.empty()) {
+    std::cerr << "stella: work directory kept: " << job.workDirectory.string() << "\n";
+  }
+}
+
+} // namespace
+
+int run(const RunArguments& args) {
+  RunOptions options;
+  options.workDirectory = args.workDirectory;
+  options.outputDirectory = args.outputDirectory;
+  options.referenceOnly = args.referenceOnly;
+  options.keepWorkDirectory = args.keepWork;
+  options.echo = !args.quiet;
+  options.commandLine = args.commandLine;
+
+  std::filesystem::path target(args.target);
+  try {
+    JobResult job;
+    if (target.extension() == ".export") {
+      if (!args.units.empty()) {
+        std::cerr << "stella: --unit goes with a .comm file; a .export declares its units itself\n";
+        return exitUsage;
+      }
+      job = runExport(Export::read(target), options);
+    } else {
+      std::map<int, std::filesystem::path> units;
+      for (const auto& u : args.units) {
+        int unit = 0;
+        std::string path;
+        if (!parseUnit(u, unit, path)) {
+          std::cerr << "stella: --unit expects UNIT=PATH with a unit from 1 to 99 other than 6 and 15, got '" << u
+                    << "'\n       example: --unit 20=mesh.med\n";
+          return exitUsage;
+        }
+        units[unit] = path;
+      }
+      job = runCommandFile(target, units, options);
+    }
+    printOutcome(job);
+    return exitCode(job.diagnostic);
+  } catch (const UserError& e) {
+    for (const auto& d : e.diagnostics()) {
+      std::cerr << formatDiagnostic(d);
+    }
+    return exitInput;
+  }
+}
+
+} // namespace stella::cli

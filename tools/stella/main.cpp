@@ -1,0 +1,96 @@
+// stella: runs code_aster-style command files for structural mechanics with contact.
+// This file only declares the command line; each subcommand lives in its own file.
+
+#include "Commands.hpp"
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+namespace {
+
+const char* const description = R"(stella runs code_aster-style command files (.comm) for structural mechanics
+with contact and friction, in batch through .export run files.
+
+Examples:
+  stella run study.export                     batch run: results where the export says
+  stella run study.comm --unit 20=mesh.med    quick run: results beside study.comm
+  stella check study.comm                     validate every command without running
+  stella check --syntax study.comm            parse only
+  stella catalog DEFI_CONTACT                 the keyword tree of a command
+  stella catalog --list                       every command stella knows
+
+Exit codes of `stella run` (the job diagnostic at the end of the message file):
+  0  OK or <A>_ALARM          1  NOOK_TEST_RESU or NO_TEST_RESU
+  2  <F>_SYNTAX_ERROR         3  <F>_ERROR
+  4  <S>_NO_CONVERGENCE       5  <F>_ABNORMAL_ABORT
+  64 bad command line         65 unreadable or malformed .export / input file
+`stella check` exits 0 when the file is valid, 2 when it is not.)";
+
+std::string joinArguments(int argc, char** argv) {
+  std::string out;
+  for (int i = 0; i < argc; ++i) {
+    out += (i ? " " : "") + std::string(argv[i]);
+  }
+  return out;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{description, "stella"};
+  app.set_version_flag("--version", std::string("stella ") + STELLA_VERSION);
+  app.require_subcommand(1);
+
+  stella::cli::RunArguments runArgs;
+  runArgs.commandLine = joinArguments(argc, argv);
+  auto* run = app.add_subcommand("run", "Run a study: a .export file, or a .comm file with --unit");
+  run->add_option("study", runArgs.target, "the .export or .comm file")->required()->check(CLI::ExistingFile);
+  run->add_option("--unit", runArgs.units, "with a .comm: a data unit, e.g. --unit 20=mesh.med");
+  run->add_option("--work-dir", runArgs.workDirectory, "work directory (default: a new temporary one)");
+  run->add_option("--output-dir", runArgs.outputDirectory,
+                  "base directory of relative result paths (default: the export's or the .comm's folder)");
+  run->add_flag("--reference-only", runArgs.referenceOnly,
+                "count only reference lines of TEST_RESU; VALE_CALC lines are information");
+  run->add_flag("--keep-work", runArgs.keepWork, "keep the work directory after a successful run");
+  run->add_flag("-q,--quiet", runArgs.quiet, "do not copy the message file to standard output");
+
+  stella::cli::CheckArguments checkArgs;
+  auto* check = app.add_subcommand("check", "Validate a command file without running it");
+  check->add_option("file", checkArgs.file, "the .comm file")->required()->check(CLI::ExistingFile);
+  check->add_flag("--syntax", checkArgs.syntaxOnly, "parse only");
+  check->add_flag("--dump-tokens", checkArgs.dumpTokens, "print the tokens");
+  check->add_flag("--dump-ast", checkArgs.dumpAst, "print the syntax tree");
+
+  std::string fmtFile;
+  bool fmtInPlace = false;
+  auto* fmtCmd = app.add_subcommand("fmt", "Pretty-print a command file");
+  fmtCmd->add_option("file", fmtFile, "the .comm file")->required()->check(CLI::ExistingFile);
+  fmtCmd->add_flag("-i,--in-place", fmtInPlace, "rewrite the file");
+
+  stella::cli::CatalogArguments catalogArgs;
+  auto* catalog = app.add_subcommand("catalog", "Show the keyword catalogue");
+  catalog->add_option("command", catalogArgs.command, "a command name, e.g. DEFI_CONTACT");
+  catalog->add_flag("--json", catalogArgs.json, "the whole catalogue as JSON");
+  catalog->add_flag("--list", catalogArgs.list, "the command names, and whether each is implemented");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int code = app.exit(e);
+    return code == 0 ? 0 : stella::cli::exitUsage;
+  }
+
+  if (run->parsed()) {
+    return stella::cli::run(runArgs);
+  }
+  if (check->parsed()) {
+    return stella::cli::check(checkArgs);
+  }
+  if (fmtCmd->parsed()) {
+    return stella::cli::format(fmtFile, fmtInPlace);
+  }
+  if (catalog->parsed()) {
+    return stella::cli::catalog(catalogArgs);
+  }
+  return stella::cli::exitUsage;
+}
