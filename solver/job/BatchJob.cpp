@@ -37,11 +37,24 @@ struct JobSpec {
   bool saveBase = false;
 };
 
+constexpr const char* workMarker = ".stella-work";
+
 fs::path makeWorkDirectory(const RunOptions& options) {
   if (!options.workDirectory.empty()) {
-    fs::remove_all(options.workDirectory);
-    fs::create_directories(options.workDirectory);
-    return fs::absolute(options.workDirectory);
+    // Only a directory stella made itself (it holds the marker) is emptied: a mistyped
+    // --work-dir must never delete a user's files.
+    const fs::path& dir = options.workDirectory;
+    if (fs::exists(dir) && !fs::is_empty(dir)) {
+      if (!fs::exists(dir / workMarker)) {
+        throw UserError(Diagnostic::fatal("RUN_4", "the work directory " + dir.string() +
+                                                       " is not empty and was not made by stella")
+                            .withNote("give a new or empty directory to --work-dir"));
+      }
+      fs::remove_all(dir);
+    }
+    fs::create_directories(dir);
+    std::ofstream(dir / workMarker) << "work directory of a stella run; emptied by the next run\n";
+    return fs::absolute(dir);
   }
   std::string pattern = (fs::temp_directory_path() / "stella-run-XXXXXX").string();
   if (mkdtemp(pattern.data()) == nullptr) {
