@@ -7,6 +7,7 @@
 #include "interpreter/Diagnostics.hpp"
 #include "interpreter/Value.hpp"
 
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,12 +15,13 @@
 
 namespace stella {
 
-class CommandSpec; // one command's definition (catalog/CommandSpec.hpp)
+struct CommandSpec; // one command's definition (catalog/CommandSpec.hpp)
+class ConceptTypes;
 
 // What validation of one call produced.
 struct ValidatedCall {
   KeywordTree keywords;
-  std::string resultType; // "" for a PROC or a command returning nothing
+  std::string resultType;          // "" for a PROC or a command returning nothing
   std::shared_ptr<Concept> reused; // the concept given by reuse=, if any
 };
 
@@ -40,6 +42,13 @@ public:
   std::string describe(const std::string& command) const;
   std::string toJson() const;
 
+  // A catalogue built from given files (path relative to catalog/commands, text), for tests and
+  // tools; not checked (see problems()).
+  static Catalog fromFiles(const std::vector<std::pair<std::string, std::string>>& files);
+  // The load-time checks: one line per problem, "FILE: COMMAND/FACT/KEYWORD: what".
+  std::vector<std::string> problems() const;
+  const ConceptTypes& conceptTypes() const;
+
   ~Catalog();
   Catalog(Catalog&&) noexcept;
 
@@ -48,5 +57,13 @@ private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// Writes doc/catalog/: one Markdown page per command (tree, defaults, allowed values, rules,
+// descriptions) and an index (README.md). Implemented in CatalogDocs.cpp.
+void writeCatalogDocs(const std::filesystem::path& dir);
+
+// `tools/catalog-coverage`: which keywords and allowed values of the catalogue no command file
+// among `commandFiles` uses (a Markdown report). Implemented in CatalogCoverage.cpp.
+std::string catalogCoverage(const std::vector<std::filesystem::path>& commandFiles);
 
 } // namespace stella
