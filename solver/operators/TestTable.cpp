@@ -1,0 +1,85 @@
+// TEST_TABLE: tests one value of a table (after FILTRE, or the MIN/MAX/SOMM/SOMM_ABS of a
+// column) against VALE_CALC and a reference, printing OK/NOOK lines.
+
+#include "interpreter/Diagnostics.hpp"
+#include "solver/post/Table.hpp"
+#include "solver/post/TableFilter.hpp"
+#include "solver/post/TestKeywords.hpp"
+#include "solver/session/OperatorRegistry.hpp"
+#include "solver/session/Session.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+
+namespace stella {
+
+namespace {
+
+double reduce(const std::string& type, const std::vector<double>& values) {
+  double r = type == "MIN" ? values.front() : (type == "MAX" ? values.front() : 0.0);
+  for (double v : values) {
+    if (type == "MIN") {
+      r = std::min(r, v);
+    } else if (type == "MAX") {
+      r = std::max(r, v);
+    } else if (type == "SOMM") {
+      r += v;
+    } else {
+      r += std::fabs(v);
+    }
+  }
+  return r;
+}
+
+Value runTestTable(OperatorCall& call) {
+  const KeywordTree& kw = call.keywords;
+  auto tableConcept = kw.conceptValue("TABLE");
+  auto table = conceptData<Table>(tableConcept);
+  STELLA_ASSERT(table != nullptr, "TABLE holds no table");
+  const std::string para = kw.text("NOM_PARA");
+  const Table::Column* col = table->column(para);
+  if (col == nullptr) {
+    throw UserError(Diagnostic::fatal("TABLE_1", fmt::format("the table {} has no parameter '{}'", tableConcept->name, para),
+                                      kw.locationOf("NOM_PARA"))
+                        .withNote(fmt::format("its parameters are: {}", fmt::join(table->columnNames(), ", "))));
+  }
+  std::vector<std::size_t> rows = filterRows(*table, kw.occurrences("FILTRE"));
+  std::vector<double> values;
+  for (std::size_t r : rows) {
+    if (col->cells[r].isNumber()) {
+      values.push_back(col->cells[r].asReal());
+    }
+  }
+  const std::string type = kw.textOr("TYPE_TEST", "");
+  if (values.empty() || (type.empty() && values.size() != 1)) {
+    throw UserError(Diagnostic::fatal("TABLE_3",
+                                      fmt::format("the filters leave {} numeric value(s) of {} in table {}; exactly "
+                                                  "one is needed",
+                                                  values.size(), para, tableConcept->name),
+                                      call.location)
+                        .withNote(values.empty() ? "check the FILTRE values against the table (IMPR_TABLE prints it)"
+                                                 : "add a FILTRE, or TYPE_TEST='MIN', 'MAX', 'SOMM' or 'SOMM_ABS'"));
+  }
+  double computed = type.empty() ? values.front() : reduce(type, values);
+  if (kw.textOr("VALE_ABS", "NON") == "OUI") {
+    computed = std::fabs(computed);
+  }
+  std::vector<std::pair<std::string, std::string>> header{{"TABLE", tableConcept->name}, {"NOM_PARA", para}};
+  if (!type.empty()) {
+    header.emplace_back("TYPE_TEST", type);
+  }
+  for (const auto& f : kw.occurrences("FILTRE")) {
+    std::string value = f.has("VALE") ? Value(f.real("VALE")).repr()
+                                      : (f.has("VALE_I") ? std::to_string(f.integer("VALE_I"))
+                                                         : f.textOr("VALE_K", ""));
+    header.emplace_back(f.text("NOM_PARA"), f.textOr("CRIT_COMP", "EQ") + " " + value);
+  }
+  reportTest(call.session, header, valueTestFromKeywords(kw, computed, para));
+  return Value();
+}
+
+} // namespace
+
+STELLA_OPERATOR("TEST_TABLE", runTestTable);
+
+} // namespace stella

@@ -1,0 +1,131 @@
+#include "TableFilter.hpp"
+
+#include "interpreter/Diagnostics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+namespace stella {
+
+namespace {
+
+bool realEquals(double a, double b, const KeywordTree& f) {
+  double tolerance = f.realOr("PRECISION", 1.0e-3);
+  bool absolute = f.textOr("CRITERE", "RELATIF") == "ABSOLU";
+  double diff = std::fabs(a - b);
+  return absolute ? diff <= tolerance : diff <= tolerance * std::fabs(b);
+}
+
+// Compares a cell with the filter's value: <0, 0 or >0, or nullopt when not comparable.
+std::optional<int> compareCell(const Value& cell, const KeywordTree& f) {
+  if (cell.isNone()) {
+    return std::nullopt;
+  }
+  if (f.has("VALE_K")) {
+    if (!cell.isString()) {
+      return std::nullopt;
+    }
+    int c = cell.asString().compare(f.text("VALE_K"));
+    return c < 0 ? -1 : (c > 0 ? 1 : 0);
+  }
+  if (!cell.isNumber()) {
+    return std::nullopt;
+  }
+  double x = cell.asReal();
+  double target = f.has("VALE") ? f.real("VALE") : static_cast<double>(f.integer("VALE_I"));
+  if (f.has("VALE") && realEquals(x, target, f)) {
+    return 0;
+  }
+  return x < target ? -1 : (x > target ? 1 : 0);
+}
+
+bool keepByComparison(const std::string& crit, std::optional<int> c) {
+  if (!c) {
+    return false;
+  }
+  if (crit == "EQ") {
+    return *c == 0;
+  }
+  if (crit == "NE") {
+    return *c != 0;
+  }
+  if (crit == "LT") {
+    return *c < 0;
+  }
+  if (crit == "GT") {
+    return *c > 0;
+  }
+  if (crit == "LE") {
+    return *c <= 0;
+  }
+  return *c >= 0; // GE
+}
+
+std::vector<std::size_t> applyFilter(const Table::Column& col, const std::vector<std::size_t>& rows,
+                                     const KeywordTree& f) {
+  const std::string crit = f.textOr("CRIT_COMP", "EQ");
+  std::vector<std::size_t> kept;
+  if (crit == "VIDE" || crit == "NON_VIDE") {
+    for (std::size_t r : rows) {
+      if (col.cells[r].isNone() == (crit == "VIDE")) {
+        kept.push_back(r);
+      }
+    }
+    return kept;
+  }
+  if (crit.rfind("MAXI", 0) == 0 || crit.rfind("MINI", 0) == 0) {
+    bool useAbs = crit.size() > 4;
+    bool max = crit.rfind("MAXI", 0) == 0;
+    std::optional<double> best;
+    for (std::size_t r : rows) {
+      if (col.cells[r].isNumber()) {
+        double x = useAbs ? std::fabs(col.cells[r].asReal()) : col.cells[r].asReal();
+        if (!best || (max ? x > *best : x < *best)) {
+          best = x;
+        }
+      }
+    }
+    for (std::size_t r : rows) {
+      if (best && col.cells[r].isNumber()) {
+        double x = useAbs ? std::fabs(col.cells[r].asReal()) : col.cells[r].asReal();
+        if (x == *best) {
+          kept.push_back(r);
+        }
+      }
+    }
+    return kept;
+  }
+  if (f.has("VALE_C")) {
+    throw UserError(Diagnostic::fatal("TABLE_2", "FILTRE with VALE_C (complex values) is not implemented yet",
+                                      f.locationOf("VALE_C")));
+  }
+  for (std::size_t r : rows) {
+    if (keepByComparison(crit, compareCell(col.cells[r], f))) {
+      kept.push_back(r);
+    }
+  }
+  return kept;
+}
+
+} // namespace
+
+std::vector<std::size_t> filterRows(const Table& table, const std::vector<KeywordTree>& filters) {
+  std::vector<std::size_t> rows(table.rowCount());
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    rows[r] = r;
+  }
+  for (const auto& f : filters) {
+    const std::string para = f.text("NOM_PARA");
+    const Table::Column* col = table.column(para);
+    if (col == nullptr) {
+      throw UserError(Diagnostic::fatal("TABLE_1", fmt::format("the table has no parameter '{}'", para),
+                                        f.locationOf("NOM_PARA"))
+                          .withNote(fmt::format("its parameters are: {}", fmt::join(table.columnNames(), ", "))));
+    }
+    rows = applyFilter(*col, rows, f);
+  }
+  return rows;
+}
+
+} // namespace stella

@@ -1,0 +1,64 @@
+#include "TestKeywords.hpp"
+
+#include "interpreter/Diagnostics.hpp"
+#include "solver/session/Session.hpp"
+
+namespace stella {
+
+namespace {
+
+void refuse(const KeywordTree& kw, const std::string& name, const std::string& why) {
+  throw UserError(Diagnostic::fatal("TEST_1", name + ": " + why + " is not implemented yet", kw.locationOf(name)));
+}
+
+// The single real of VALE_CALC / VALE_CALC_I (or VALE_REFE / VALE_REFE_I).
+std::optional<double> singleValue(const KeywordTree& kw, const std::string& realName, const std::string& intName) {
+  for (const std::string& name : {realName, intName}) {
+    if (const SimpleKeyword* k = kw.simple(name)) {
+      if (k->values.size() != 1) {
+        refuse(kw, name, "testing several values at once");
+      }
+      return k->values.front().asReal();
+    }
+  }
+  return std::nullopt;
+}
+
+} // namespace
+
+ValueTest valueTestFromKeywords(const KeywordTree& kw, double computed, const std::string& legend) {
+  for (const std::string name : {"VALE_CALC_C", "VALE_REFE_C", "VALE_CALC_K", "VALE_REFE_K"}) {
+    if (kw.has(name)) {
+      refuse(kw, name, name.back() == 'C' ? "testing complex values" : "testing texts");
+    }
+  }
+  ValueTest t;
+  t.legend = kw.textOr("LEGENDE", legend);
+  t.computed = computed;
+  t.valeCalc = singleValue(kw, "VALE_CALC", "VALE_CALC_I");
+  t.toleMachine = kw.realOr("TOLE_MACHINE", 1.0e-6);
+  if (kw.has("REFERENCE")) {
+    t.reference = kw.text("REFERENCE");
+    t.valeRefe = singleValue(kw, "VALE_REFE", "VALE_REFE_I");
+    t.precision = kw.realOr("PRECISION", 1.0e-3);
+  }
+  t.absolute = kw.textOr("CRITERE", "RELATIF") == "ABSOLU";
+  t.ordreGrandeur = kw.realOr("ORDRE_GRANDEUR", 1.0);
+  return t;
+}
+
+void reportTest(Session& session, const std::vector<std::pair<std::string, std::string>>& header,
+                const ValueTest& test) {
+  TestOutcome outcome = runValueTest(test, session.options().referenceOnly);
+  std::string text = testHeader(header) + outcome.text + "\n";
+  session.result() << text;
+  session.message() << text;
+  for (int i = 0; i < outcome.ok; ++i) {
+    session.recordTest(true);
+  }
+  for (int i = 0; i < outcome.nook; ++i) {
+    session.recordTest(false);
+  }
+}
+
+} // namespace stella
