@@ -35,7 +35,7 @@ struct DictObject {
 struct KeywordArgument {
   std::string name;
   std::shared_ptr<const Value> value;
-  SourceLocation location; // of the keyword name
+  SourceLocation location;      // of the keyword name
   SourceLocation valueLocation; // of the value expression
 };
 
@@ -80,6 +80,9 @@ class NativeObject {
 public:
   virtual ~NativeObject() = default;
   virtual std::string typeName() const = 0;
+  // `obj.NAME`: the attribute's value (a NativeCallable for a method), or nullptr when the object
+  // has no such attribute (the evaluator then reports LANG_ATTR at the user's location).
+  virtual std::shared_ptr<const Value> attribute(const std::string& name) const;
 };
 
 struct NoneType {
@@ -93,7 +96,21 @@ struct TupleValue {
 
 class Value {
 public:
-  enum class Kind { None, Bool, Int, Real, Complex, String, Tuple, List, Dict, Factor, Concept, Callable, Native };
+  enum class Kind {
+    None,
+    Bool,
+    Int,
+    Real,
+    Complex,
+    String,
+    Tuple,
+    List,
+    Dict,
+    Factor,
+    Concept,
+    Callable,
+    Native
+  };
 
   Value() = default; // None
   Value(NoneType) {}
@@ -112,8 +129,12 @@ public:
   Value(std::shared_ptr<Callable> c) : v_(std::move(c)) {}
   Value(std::shared_ptr<NativeObject> n) : v_(std::move(n)) {}
 
-  static Value tuple(ValueList items) { return Value(TupleValue{std::make_shared<const ValueList>(std::move(items))}); }
-  static Value list(ValueList items) { return Value(std::make_shared<ListObject>(ListObject{std::move(items)})); }
+  static Value tuple(ValueList items) {
+    return Value(TupleValue{std::make_shared<const ValueList>(std::move(items))});
+  }
+  static Value list(ValueList items) {
+    return Value(std::make_shared<ListObject>(ListObject{std::move(items)}));
+  }
 
   Kind kind() const { return static_cast<Kind>(v_.index()); }
   bool isNone() const { return kind() == Kind::None; }
@@ -140,10 +161,14 @@ public:
   const ValueList& items() const;
   const std::shared_ptr<ListObject>& asList() const { return std::get<std::shared_ptr<ListObject>>(v_); }
   const std::shared_ptr<DictObject>& asDict() const { return std::get<std::shared_ptr<DictObject>>(v_); }
-  const std::shared_ptr<FactorObject>& asFactor() const { return std::get<std::shared_ptr<FactorObject>>(v_); }
+  const std::shared_ptr<FactorObject>& asFactor() const {
+    return std::get<std::shared_ptr<FactorObject>>(v_);
+  }
   const std::shared_ptr<Concept>& asConcept() const { return std::get<std::shared_ptr<Concept>>(v_); }
   const std::shared_ptr<Callable>& asCallable() const { return std::get<std::shared_ptr<Callable>>(v_); }
-  const std::shared_ptr<NativeObject>& asNative() const { return std::get<std::shared_ptr<NativeObject>>(v_); }
+  const std::shared_ptr<NativeObject>& asNative() const {
+    return std::get<std::shared_ptr<NativeObject>>(v_);
+  }
 
   // Python's truth value.
   bool truthy() const;
@@ -176,5 +201,22 @@ struct CallArguments {
 
 // A function implemented in C++ (built-ins, catalogue building blocks, math).
 using NativeFunction = std::function<Value(const CallArguments&)>;
+
+// A Callable implemented by a NativeFunction: what defineNative binds, what a handler returns
+// for a concept method (`TAB.EXTR_TABLE`) or for calling a concept (`conceptAttribute(c,
+// "__call__")`, e.g. a FORMULE). A UserError it throws without a location gets the call's.
+class NativeCallable : public Callable {
+public:
+  NativeCallable(std::string name, NativeFunction fn) : name_(std::move(name)), fn_(std::move(fn)) {}
+  std::string name() const override { return name_; }
+  const NativeFunction& function() const { return fn_; }
+
+private:
+  std::string name_;
+  NativeFunction fn_;
+};
+
+// Value holding a NativeCallable.
+Value makeNativeFunction(std::string name, NativeFunction fn);
 
 } // namespace stella
