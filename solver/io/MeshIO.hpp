@@ -1,0 +1,42 @@
+#pragma once
+// Reading and writing meshes: Gmsh .msh (2.2 and 4.1 ASCII), ASTER .mail, MED (libmedC).
+// Every reader returns a Mesh in code_aster's node orderings, or throws UserError (MESHFILE_*,
+// see MeshFileError.hpp) naming the file and the problem; readers never crash on damaged files.
+//
+// Groups: Gmsh physical groups become cell groups named by their physical name ("GM<tag>"
+// without a name) and node groups of the same name (the nodes of those cells); MED families
+// become cell and node groups; .mail GROUP_MA/GROUP_NO blocks become groups.
+
+#include "solver/mesh/Mesh.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace stella {
+
+enum class MeshFormat { Med, Aster, Gmsh };
+
+// By extension: .med/.rmed/.mmed -> Med, .mail/.mai -> Aster, .msh -> Gmsh.
+std::optional<MeshFormat> meshFormatFromExtension(const std::filesystem::path& file);
+
+Mesh readGmshMesh(const std::filesystem::path& file);
+Mesh readAsterMesh(const std::filesystem::path& file);
+// `meshName` empty: the first mesh of the file (as LIRE_MAILLAGE without NOM_MED).
+Mesh readMedMesh(const std::filesystem::path& file, const std::string& meshName = "");
+// Names of the meshes in a MED file, in file order.
+std::vector<std::string> medMeshNames(const std::filesystem::path& file);
+Mesh readMesh(const std::filesystem::path& file, MeshFormat format, const std::string& medMeshName = "");
+
+// Writers. MED: the mesh named `meshName` (mesh.name() or "MAIL" when empty) with node and cell
+// names and the groups as families; `append` adds the mesh to an existing file.
+void writeMedMesh(const std::filesystem::path& file, const Mesh& mesh, const std::string& meshName = "",
+                  bool append = false);
+void writeAsterMesh(const std::filesystem::path& file, const Mesh& mesh);
+// Gmsh 2.2 ASCII; each cell group becomes a physical group (a cell in several groups is written
+// once per group with the same element tag, which readGmshMesh merges back into one cell).
+void writeGmshMesh(const std::filesystem::path& file, const Mesh& mesh);
+void writeMesh(const std::filesystem::path& file, const Mesh& mesh, MeshFormat format);
+
+} // namespace stella

@@ -1,0 +1,151 @@
+// Token reader for text mesh formats (see TextScanner.hpp).
+
+#include "solver/io/TextScanner.hpp"
+
+#include "solver/io/MeshFileError.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+
+namespace stella {
+
+TextScanner::TextScanner(std::filesystem::path file, std::string text, char comment)
+    : file_(std::move(file)), text_(std::move(text)), comment_(comment) {}
+
+void TextScanner::skipSpace() {
+  while (pos_ < text_.size()) {
+    const char c = text_[pos_];
+    if (c == '\n') {
+      ++line_;
+      ++pos_;
+    } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
+      ++pos_;
+    } else if (comment_ != '\0' && c == comment_) {
+      while (pos_ < text_.size() && text_[pos_] != '\n') {
+        ++pos_;
+      }
+    } else {
+      break;
+    }
+  }
+}
+
+std::string_view TextScanner::next() {
+  skipSpace();
+  tokenLine_ = line_;
+  if (pos_ >= text_.size()) {
+    return {};
+  }
+  const std::string_view all(text_);
+  if (text_[pos_] == '"') {
+    const std::size_t start = pos_ + 1;
+    const std::size_t end = text_.find_first_of("\"\n", start);
+    if (end == std::string::npos || text_[end] != '"') {
+      fail("unterminated quoted string");
+    }
+    pos_ = end + 1;
+    return all.substr(start, end - start);
+  }
+  const std::size_t start = pos_;
+  while (pos_ < text_.size()) {
+    const char c = text_[pos_];
+    if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v' ||
+        (comment_ != '\0' && c == comment_)) {
+      break;
+    }
+    ++pos_;
+  }
+  return all.substr(start, pos_ - start);
+}
+
+std::string_view TextScanner::expect(const char* what) {
+  const auto t = next();
+  if (t.empty()) {
+    fail(std::string("unexpected end of file, expected ") + what);
+  }
+  return t;
+}
+
+std::string_view TextScanner::peek() {
+  const std::size_t pos = pos_;
+  const int line = line_;
+  const int tokenLine = tokenLine_;
+  const auto t = next();
+  pos_ = pos;
+  line_ = line;
+  tokenLine_ = tokenLine;
+  return t;
+}
+
+bool TextScanner::atEnd() {
+  skipSpace();
+  return pos_ >= text_.size();
+}
+
+bool TextScanner::moreOnLine() {
+  skipSpace();
+  return pos_ < text_.size() && line_ == tokenLine_;
+}
+
+void TextScanner::skipLine() {
+  while (pos_ < text_.size() && text_[pos_] != '\n') {
+    ++pos_;
+  }
+}
+
+std::int64_t TextScanner::integer(const char* what) {
+  const auto t = expect(what);
+  std::int64_t v = 0;
+  const char* begin = t.data();
+  if (!t.empty() && t[0] == '+') {
+    ++begin;
+  }
+  const auto [ptr, ec] = std::from_chars(begin, t.data() + t.size(), v);
+  if (ec != std::errc() || ptr != t.data() + t.size()) {
+    fail(std::string("expected ") + what + " (an integer), found '" + std::string(t.substr(0, 40)) + "'");
+  }
+  return v;
+}
+
+double TextScanner::real(const char* what) {
+  const auto t = expect(what);
+  std::string s(t);
+  // Fortran-style exponents (1.0D+00) appear in .mail files.
+  for (char& c : s) {
+    if (c == 'D' || c == 'd') {
+      c = 'E';
+    }
+  }
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (s.empty() || end != s.c_str() + s.size()) {
+    fail(std::string("expected ") + what + " (a real number), found '" + std::string(t.substr(0, 40)) + "'");
+  }
+  if (!std::isfinite(v)) {
+    failContent(std::string(what) + " is not a finite number ('" + std::string(t.substr(0, 40)) + "')");
+  }
+  return v;
+}
+
+std::int64_t TextScanner::count(const char* what, std::int64_t bytesPerItem) {
+  const std::int64_t n = integer(what);
+  if (n < 0) {
+    failContent(std::string(what) + " is negative (" + std::to_string(n) + ")");
+  }
+  if (n > static_cast<std::int64_t>(text_.size()) / std::max<std::int64_t>(1, bytesPerItem) + 1) {
+    failContent(std::string(what) + " is " + std::to_string(n) +
+                ", more than the file can hold (truncated file?)");
+  }
+  return n;
+}
+
+void TextScanner::fail(const std::string& what) const {
+  throwFileError("MESHFILE_2", file_, what, tokenLine_);
+}
+
+void TextScanner::failContent(const std::string& what) const {
+  throwFileError("MESHFILE_3", file_, what, tokenLine_);
+}
+
+} // namespace stella

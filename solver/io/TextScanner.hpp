@@ -1,0 +1,51 @@
+#pragma once
+// Token reader for the text mesh formats (Gmsh .msh ASCII, ASTER .mail): whitespace-separated
+// tokens with line numbers, optional comment character, double-quoted strings as one token, and
+// typed reads that raise MESHFILE_2 naming the file and line on any malformed number.
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace stella {
+
+class TextScanner {
+public:
+  TextScanner(std::filesystem::path file, std::string text, char comment = '\0');
+
+  // Next token (empty at end of file). Quoted tokens are returned without their quotes.
+  std::string_view next();
+  // Next token, MESHFILE_2 "unexpected end of file, expected <what>" at end.
+  std::string_view expect(const char* what);
+  std::string_view peek();
+  bool atEnd();
+  // Line of the last token returned.
+  int line() const { return tokenLine_; }
+  // Whether another token follows on the line of the last token returned.
+  bool moreOnLine();
+  // Skips the rest of the current line (after the last token).
+  void skipLine();
+
+  std::int64_t integer(const char* what);
+  double real(const char* what); // finite values only
+  // A count that cannot exceed what the file could hold (guards allocations on damaged files).
+  std::int64_t count(const char* what, std::int64_t bytesPerItem = 2);
+
+  [[noreturn]] void fail(const std::string& what) const;
+  [[noreturn]] void failContent(const std::string& what) const;
+  const std::filesystem::path& file() const { return file_; }
+  std::size_t size() const { return text_.size(); }
+
+private:
+  void skipSpace();
+
+  std::filesystem::path file_;
+  std::string text_;
+  char comment_;
+  std::size_t pos_ = 0;
+  int line_ = 1;
+  int tokenLine_ = 0;
+};
+
+} // namespace stella
