@@ -149,6 +149,9 @@ void describeLevel(const Level& level, int indent, std::string& out) {
       if (s.noRepeat) {
         out += " no-repeat";
       }
+      if (!s.outOfScopeValues.empty()) {
+        out += " (outside stella's scope: " + values(s.outOfScopeValues) + ")";
+      }
       if (!s.renamedTo.empty()) {
         out += " (old spelling of " + s.renamedTo + ")";
       }
@@ -290,7 +293,7 @@ const char* kindName(CommandKind k) {
 
 std::string describeResult(const CommandSpec& c) {
   if (!c.resultFrom.empty()) {
-    return "the type of the concept given to " + c.resultFrom;
+    return "the type of the concept given to " + join(c.resultFrom, " or ");
   }
   std::string out;
   for (const auto& [condition, type] : c.resultCases) {

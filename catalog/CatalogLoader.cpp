@@ -147,6 +147,8 @@ Value makeSimple(const CallArguments& a) {
       s->defaultValue = listOf(v);
     } else if (k.name == "into") {
       s->into = listOf(v);
+    } else if (k.name == "hors_perimetre") {
+      s->outOfScopeValues = listOf(v);
     } else if (k.name == "min") {
       s->min = bound(k);
     } else if (k.name == "max") {
@@ -262,7 +264,9 @@ NativeFunction makeCommand(CommandKind kind) {
           fail("result= expects a type name or {'condition': 'type', ...}");
         }
       } else if (k.name == "result_from") {
-        c->resultFrom = text(k);
+        c->resultFrom = texts(k);
+      } else if (k.name == "mots_cles_libres") {
+        c->body.freeKeywords = v.truthy();
       } else if (k.name == "reentrant") {
         std::string r = text(k);
         if (r.empty() || (r[0] != 'n' && r[0] != 'o' && r[0] != 'f')) {
@@ -509,8 +513,11 @@ struct Checker {
     }
   }
 
+  std::set<std::string> outOfScope; // keywords declared outside the scope, here or above
+
   void checkLevel(const std::string& path, const Level& level, const std::set<std::string>& inherited) {
     std::set<std::string> names = inherited;
+    outOfScope.insert(level.outOfScope.begin(), level.outOfScope.end());
     allNames(level, names);
     checkRules(path, level, names);
     for (const Entry& e : level.entries) {
@@ -532,7 +539,8 @@ struct Checker {
     for (const Rule& r : level.rules) {
       for (const auto& n : r.names) {
         bool removed = std::find(command.removedKeywords.begin(), command.removedKeywords.end(), n) !=
-                       command.removedKeywords.end();
+                           command.removedKeywords.end() ||
+                       outOfScope.count(n) > 0;
         if (!names.count(n) && !removed) {
           problem(path, "rule " + r.text() + " names the unknown keyword " + n +
                             " (declare it in supprimes= if it was removed)");
@@ -552,7 +560,7 @@ struct Checker {
 std::vector<std::string> checkCatalog(const LoadedCatalog& catalog) {
   std::vector<std::string> problems;
   for (const auto& [name, command] : catalog.commands) {
-    Checker c{catalog, *command, problems};
+    Checker c{catalog, *command, problems, {}};
     if (command->description.empty()) {
       c.problem(name, "no description (fr=)");
     }

@@ -58,6 +58,8 @@ struct Level {
   // Keywords of the reference catalogue deliberately left out because they belong to physics
   // outside the project (thermal, XFEM, shells' internal options...): refused by name.
   std::vector<std::string> outOfScope;
+  // Keywords not in the catalogue are accepted as given (FORMULE's constants: p0=p0).
+  bool freeKeywords = false;
 };
 
 struct SimpleSpec {
@@ -65,6 +67,9 @@ struct SimpleSpec {
   std::vector<std::string> types; // 'TXM', 'R', 'I', 'C', or concept types (several = tuple)
   std::optional<ValueList> defaultValue;
   ValueList into;
+  // Values of the reference catalogue outside stella's scope (FORMULATION='XFEM'): refused by
+  // name with CATALOG_SCOPE rather than as unknown values.
+  ValueList outOfScopeValues;
   int min = 1;
   int max = 1; // kUnbounded for '**'
   std::optional<double> valMin;
@@ -108,7 +113,7 @@ struct CommandSpec {
   // the concept given at keyword `resultFrom`.
   std::string resultType;
   std::vector<std::pair<std::shared_ptr<const CompiledExpression>, std::string>> resultCases;
-  std::string resultFrom;
+  std::vector<std::string> resultFrom;      // the first of these keywords that is given
   char reentrant = 'n';                     // 'n' never, 'o' must reuse, 'f' may reuse
   std::string reuseKeyword;                 // the keyword naming the reused concept ('o:MAILLAGE')
   std::vector<std::string> removedKeywords; // names rules may cite although no longer defined

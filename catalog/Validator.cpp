@@ -95,6 +95,12 @@ CompiledExpression::Lookup levelLookup(const std::map<std::string, Value>& value
       return makeNativeFunction(
           name, [valueOf](const CallArguments& a) -> Value { return valueOf(nameArgument(a, "value")); });
     }
+    if (name == "first") { // the first value of a keyword (None when absent)
+      return makeNativeFunction(name, [valueOf](const CallArguments& a) -> Value {
+        Value v = valueOf(nameArgument(a, "first"));
+        return isSeq(v) ? (v.items().empty() ? Value() : v.items().front()) : v;
+      });
+    }
     if (name == "is_type") {
       return makeNativeFunction(name, [valueOf](const CallArguments& a) -> Value {
         Value v = valueOf(nameArgument(a, "is_type"));
@@ -255,8 +261,8 @@ private:
   }
 
   std::string resultType(const KeywordTree& tree) {
-    if (!command_.resultFrom.empty()) {
-      if (const SimpleKeyword* k = tree.simple(command_.resultFrom);
+    for (const auto& from : command_.resultFrom) {
+      if (const SimpleKeyword* k = tree.simple(from);
           k && !k->values.empty() && k->values.front().isConcept()) {
         return k->values.front().asConcept()->type;
       }
@@ -359,10 +365,26 @@ private:
 
     for (const KeywordArgument& k : keywords) {
       if (active.byName.count(k.name) == 0) {
-        reportNotAllowed(level, active, k, where);
+        if (level.freeKeywords) {
+          tree.addSimple(SimpleKeyword{k.name, items(k.value ? *k.value : Value()), k.location, false});
+        } else {
+          reportNotAllowed(level, active, k, where);
+        }
       }
     }
     std::vector<std::string> present;
+    auto noteRename = [&](const std::string& name, const std::string& stored, const SourceLocation& loc) {
+      if (stored == name) {
+        return;
+      }
+      present.push_back(stored); // rules written with the current spelling see the old one too
+      if (givenArgs.count(stored)) {
+        error("CATALOG_15",
+              name + " and " + stored + " are the same keyword (" + name +
+                  " is the older spelling); give only one",
+              loc);
+      }
+    };
     for (const Entry* e : active.order) {
       auto g = givenArgs.find(e->name);
       if (e->simple) {
@@ -370,6 +392,7 @@ private:
         std::string stored = s.renamedTo.empty() ? e->name : s.renamedTo;
         if (g != givenArgs.end()) {
           present.push_back(e->name);
+          noteRename(e->name, stored, g->second->location);
           if (auto values = checkSimple(e->name, s, *g->second, where)) {
             tree.addSimple(SimpleKeyword{stored, std::move(*values), g->second->location, false});
           }
@@ -388,6 +411,7 @@ private:
         std::string stored = f.renamedTo.empty() ? e->name : f.renamedTo;
         if (g != givenArgs.end()) {
           present.push_back(e->name);
+          noteRename(e->name, stored, g->second->location);
           auto occurrences = checkFactor(e->name, f, *g->second, where);
           tree.addFactor(FactorKeyword{stored, std::move(occurrences), g->second->location, false});
         } else if (f.presence == Presence::Defaulted) {
@@ -502,7 +526,7 @@ private:
         if (v.isString()) {
           return v;
         }
-      } else if (v.isConcept() && types_.isA(v.asConcept()->type, t)) {
+      } else if (v.isConcept() && (t == "assd" || types_.isA(v.asConcept()->type, t))) {
         return v;
       }
     }
@@ -564,6 +588,13 @@ private:
         error("CATALOG_16",
               name + ": the concept " + converted->asConcept()->name + " was destroyed by DETRUIRE",
               k.valueLocation);
+        continue;
+      }
+      if (std::any_of(s.outOfScopeValues.begin(), s.outOfScopeValues.end(),
+                      [&](const Value& x) { return x.equals(*converted); })) {
+        error("CATALOG_SCOPE",
+              name + " = " + converted->repr() + " belongs to physics outside stella's scope",
+              k.valueLocation, {"allowed: " + joinValues(s.into)});
         continue;
       }
       if (!s.into.empty() && std::none_of(s.into.begin(), s.into.end(),
