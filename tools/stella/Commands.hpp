@@ -37,6 +37,8 @@ struct CatalogArguments {
 };
 int catalog(const CatalogArguments& args);
 
+int convert(const std::string& in, const std::string& out);
+
 // Exit codes shared by every subcommand (documented in --help and the README).
 inline constexpr int exitUsage = 64;
 inline constexpr int exitInput = 65; // a file that cannot be read or is malformed

@@ -18,6 +18,7 @@ Examples:
   stella check --syntax study.comm            parse only
   stella catalog DEFI_CONTACT                 the keyword tree of a command
   stella catalog --list                       every command stella knows
+  stella convert mesh.msh mesh.med            mesh conversion (Gmsh, ASTER, MED)
 
 Exit codes of `stella run` (the job diagnostic at the end of the message file):
   0  OK or <A>_ALARM          1  NOOK_TEST_RESU or NO_TEST_RESU
@@ -73,6 +74,12 @@ int main(int argc, char** argv) {
   catalog->add_flag("--json", catalogArgs.json, "the whole catalogue as JSON");
   catalog->add_flag("--list", catalogArgs.list, "the command names, and whether each is implemented");
 
+  std::string convertIn;
+  std::string convertOut;
+  auto* convert = app.add_subcommand("convert", "Convert a mesh between formats (.msh, .mail, .med)");
+  convert->add_option("input", convertIn, "the mesh to read (.msh, .mail, .med)")->required()->check(CLI::ExistingFile);
+  convert->add_option("output", convertOut, "the mesh to write (.med, .mail, .msh)")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -91,6 +98,9 @@ int main(int argc, char** argv) {
   }
   if (catalog->parsed()) {
     return stella::cli::catalog(catalogArgs);
+  }
+  if (convert->parsed()) {
+    return stella::cli::convert(convertIn, convertOut);
   }
   return stella::cli::exitUsage;
 }
