@@ -52,6 +52,31 @@ check "syntax error: <F>_SYNTAX_ERROR" grep -q -- "--- DIAGNOSTIC JOB : <F>_SYNT
 check "syntax error: exit 2" test $code -eq 2
 check "syntax error: located in the command file" grep -q "bad.comm:2:" results/bad.mess
 
+cat > table.comm <<'COMM'
+DEBUT()
+T = CREA_TABLE(LISTE=(_F(PARA='INST', LISTE_R=(0.5, 1.0)), _F(PARA='DY', LISTE_R=(-1.0, -2.0))))
+TEST_TABLE(TABLE=T, NOM_PARA='DY', FILTRE=_F(NOM_PARA='INST', VALE=1.0),
+           VALE_CALC=-2.0, REFERENCE='ANALYTIQUE', VALE_REFE=-2.0)
+TEST_TABLE(TABLE=T, NOM_PARA='DY', TYPE_TEST='MIN', VALE_CALC=-2.0)
+IMPR_TABLE(TABLE=T)
+FIN()
+this text after FIN() is ignored (
+COMM
+printf 'P testlist verification\nF comm table.comm D 1\nF mess results/table.mess R 6\nF resu results/table.resu R 8\n' > table.export
+"$stella" run table.export --quiet >out.txt 2>err.txt; code=$?
+check "table study: OK" grep -q -- "--- DIAGNOSTIC JOB : OK" results/table.mess
+check "table study: exit 0" test $code -eq 0
+check "table study: OK lines in the result file" test "$(grep -c '^ OK ' results/table.resu)" -eq 3
+check "table study: IMPR_TABLE in the result file" grep -q "INST" results/table.resu
+check "table study: command echoed with its location" grep -q "Command #0002   CREA_TABLE   (.*table.comm:2:" results/table.mess
+
+sed 's/VALE_REFE=-2.0/VALE_REFE=-2.5/' table.comm > nook.comm
+printf 'F comm nook.comm D 1\nF mess results/nook.mess R 6\n' > nook.export
+"$stella" run nook.export --quiet >out.txt 2>err.txt; code=$?
+check "failing test: NOOK_TEST_RESU" grep -q -- "--- DIAGNOSTIC JOB : NOOK_TEST_RESU" results/nook.mess
+check "failing test: exit 1" test $code -eq 1
+check "failing test: NOOK line" grep -q "^NOOK ANALYTIQUE" results/nook.mess
+
 "$stella" run ok.comm --quiet >out.txt 2>err.txt; code=$?
 check "quick run of a .comm: message file beside it" test -s ok.mess
 check "quick run of a .comm: exit 0" test $code -eq 0
