@@ -214,7 +214,7 @@ std::string rigiFamily(CellType type, IntegrationRole role) {
   case CellType::TRIA3:
     return skin ? "FPG3" : "FPG1";
   case CellType::TRIA6:
-    return skin ? "FPG6" : "FPG3";
+    return (skin || role == IntegrationRole::AxisymmetricVolume) ? "FPG6" : "FPG3";
   case CellType::QUAD4:
     return "FPG4";
   case CellType::QUAD8:
@@ -285,8 +285,8 @@ QuadratureRule namedRule(CellType type, const std::string& family) {
 }
 
 const QuadratureRule& rigiRule(CellType type, IntegrationRole role) {
-  static std::array<std::array<std::unique_ptr<QuadratureRule>, 2>, cellTypeCount> cache;
-  static std::array<std::array<std::once_flag, 2>, cellTypeCount> once;
+  static std::array<std::array<std::unique_ptr<QuadratureRule>, integrationRoleCount>, cellTypeCount> cache;
+  static std::array<std::array<std::once_flag, integrationRoleCount>, cellTypeCount> once;
   const auto i = static_cast<std::size_t>(type);
   const auto j = static_cast<std::size_t>(role);
   std::call_once(once[i][j], [&] {

@@ -21,8 +21,10 @@ struct QuadratureRule {
 };
 
 // How a cell is integrated: as the volume of the modelling (a TRIA3 of a D_PLAN model, a HEXA8
-// of a 3D model) or as a skin carrying loads/contact (a SEG2 edge in 2D, a TRIA3 face in 3D).
-enum class IntegrationRole { Volume, Skin };
+// of a 3D model), as an axisymmetric volume (code_aster integrates AXIS TRIA6 with FPG6 instead
+// of FPG3), or as a skin carrying loads/contact (a SEG2 edge in 2D, a TRIA3 face in 3D).
+enum class IntegrationRole { Volume, Skin, AxisymmetricVolume };
+inline constexpr int integrationRoleCount = 3;
 
 // The full-integration (RIGI) rule of a cell type in a role; built once, thread-safe.
 const QuadratureRule& rigiRule(CellType type, IntegrationRole role);

@@ -1,0 +1,82 @@
+// Strain-displacement matrices for 3D, plane strain/stress and axisymmetric elements.
+
+#include "solver/fem/Kinematics.hpp"
+
+#include <string>
+
+namespace stella::fem {
+
+void computeKinematics(CellType type, Modelling m, const Eigen::Ref<const Eigen::MatrixXd>& x,
+                       ElementKinematics& out) {
+  const int dim = spaceDimension(m);
+  if (stella::dimension(type) != dim) {
+    throw std::invalid_argument(std::string("cell type ") + std::string(name(type)) +
+                                " cannot be a volume element of modelling " + std::string(modellingName(m)));
+  }
+  const ShapeTable& t = shapeTable(type, m == Modelling::Axisymmetric ? IntegrationRole::AxisymmetricVolume
+                                                                      : IntegrationRole::Volume);
+  const int nno = t.nodeCount;
+  const int npg = t.pointCount();
+  const int ns = strainSize(m);
+  out.modelling = m;
+  out.table = &t;
+  out.nodeCount = nno;
+  out.dofCount = nno * dim;
+  out.weights.resize(static_cast<std::size_t>(npg));
+  out.points.resize(static_cast<std::size_t>(npg));
+  out.b.resize(static_cast<std::size_t>(npg));
+  for (int q = 0; q < npg; ++q) {
+    const auto uq = static_cast<std::size_t>(q);
+    const Eigen::MatrixXd& dn = t.gradients[uq];
+    const Eigen::VectorXd& n = t.values[uq];
+    const Eigen::MatrixXd jac = x.transpose() * dn; // dim x dim: dx_i / dxi_j
+    const double det = jac.determinant();
+    if (!(det > 0.0)) {
+      throw DegenerateElementError(q, det);
+    }
+    const Eigen::MatrixXd g = dn * jac.inverse(); // nno x dim: dN / dx
+    Eigen::Vector3d p = Eigen::Vector3d::Zero();
+    p.head(dim) = x.transpose() * n;
+    out.points[uq] = p;
+    double w = t.rule->weights[uq] * det;
+    Eigen::MatrixXd& b = out.b[uq];
+    b.setZero(ns, nno * dim);
+    if (dim == 3) {
+      for (int i = 0; i < nno; ++i) {
+        const double gx = g(i, 0), gy = g(i, 1), gz = g(i, 2);
+        const int c = 3 * i;
+        b(0, c) = gx;
+        b(1, c + 1) = gy;
+        b(2, c + 2) = gz;
+        b(3, c) = gy;
+        b(3, c + 1) = gx;
+        b(4, c) = gz;
+        b(4, c + 2) = gx;
+        b(5, c + 1) = gz;
+        b(5, c + 2) = gy;
+      }
+    } else {
+      const double r = p[0];
+      if (m == Modelling::Axisymmetric) {
+        if (!(r > 0.0)) {
+          throw DegenerateElementError(q, r);
+        }
+        w *= r;
+      }
+      for (int i = 0; i < nno; ++i) {
+        const double gx = g(i, 0), gy = g(i, 1);
+        const int c = 2 * i;
+        b(0, c) = gx;
+        b(1, c + 1) = gy;
+        if (m == Modelling::Axisymmetric) {
+          b(2, c) = n[i] / r;
+        }
+        b(3, c) = gy;
+        b(3, c + 1) = gx;
+      }
+    }
+    out.weights[uq] = w;
+  }
+}
+
+} // namespace stella::fem
