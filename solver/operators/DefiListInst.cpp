@@ -1,0 +1,85 @@
+// DEFI_LIST_INST: the instants of a nonlinear analysis (METHODE='MANUEL') and the ECHEC
+// actions: ERREUR with DECOUPE (SUBD_PAS, SUBD_NIVEAU, SUBD_PAS_MINI) or ARRET, and
+// INTERPENETRATION with ADAPT_COEF_PENA (PENE_MAXI, COEF_MAXI) or ARRET.
+
+#include "interpreter/Diagnostics.hpp"
+#include "solver/functions/InstantList.hpp"
+#include "solver/functions/RealFunction.hpp"
+#include "solver/session/OperatorRegistry.hpp"
+
+#include <fmt/format.h>
+
+namespace stella {
+
+namespace {
+
+[[noreturn]] void notImplemented(const KeywordTree& kw, const std::string& name, const std::string& what) {
+  throw UserError(Diagnostic::fatal("LIST_INST_1", "DEFI_LIST_INST: " + what + " is not implemented yet",
+                                    kw.locationOf(name)));
+}
+
+FailurePolicy readFailure(const KeywordTree& e) {
+  FailurePolicy p;
+  const std::string event = e.textOr("EVENEMENT", "ERREUR");
+  const std::string action = e.textOr("ACTION", "DECOUPE");
+  if (event == "ERREUR") {
+    p.event = FailurePolicy::Event::Error;
+    if (action == "ARRET") {
+      p.action = FailurePolicy::Action::Stop;
+    } else if (action == "DECOUPE") {
+      p.action = FailurePolicy::Action::Subdivide;
+      if (e.textOr("SUBD_METHODE", "MANUEL") != "MANUEL") {
+        notImplemented(e, "SUBD_METHODE", "SUBD_METHODE='AUTO'");
+      }
+      p.subdivisions = static_cast<int>(e.integerOr("SUBD_PAS", 4));
+      p.maxLevel = static_cast<int>(e.integerOr("SUBD_NIVEAU", 3));
+      p.minStep = e.realOr("SUBD_PAS_MINI", 0.0);
+    } else {
+      notImplemented(e, "ACTION", "ACTION='" + action + "'");
+    }
+  } else if (event == "INTERPENETRATION") {
+    p.event = FailurePolicy::Event::Interpenetration;
+    p.maxPenetration = e.real("PENE_MAXI");
+    p.action = action == "ARRET" ? FailurePolicy::Action::Stop : FailurePolicy::Action::AdaptPenalty;
+    p.maxCoefficient = e.realOr("COEF_MAXI", 1.0e12);
+  } else {
+    notImplemented(e, "EVENEMENT", "EVENEMENT='" + event + "'");
+  }
+  return p;
+}
+
+Value runDefiListInst(OperatorCall& call) {
+  const KeywordTree& kw = call.keywords;
+  if (kw.textOr("METHODE", "MANUEL") != "MANUEL") {
+    notImplemented(kw, "METHODE", "METHODE='AUTO' (automatic time stepping)");
+  }
+  auto list = std::make_shared<InstantList>();
+  const KeywordTree& def = kw.occurrences("DEFI_LIST").front();
+  if (def.has("VALE")) {
+    list->instants = def.reals("VALE");
+  } else if (def.has("LIST_INST")) {
+    auto reals = conceptData<RealList>(def.conceptValue("LIST_INST"));
+    STELLA_ASSERT(reals != nullptr, "LIST_INST holds no list of reals");
+    list->instants = reals->values;
+  } else {
+    notImplemented(def, "RESULTAT", "DEFI_LIST/RESULTAT (instants taken from a result)");
+  }
+  for (std::size_t i = 1; i < list->instants.size(); ++i) {
+    if (!(list->instants[i] > list->instants[i - 1])) {
+      throw UserError(Diagnostic::fatal("LIST_INST_2",
+                                        fmt::format("the instants must increase strictly: {} follows {}",
+                                                    list->instants[i], list->instants[i - 1]),
+                                        def.location()));
+    }
+  }
+  for (const KeywordTree& e : kw.occurrences("ECHEC")) {
+    list->failures.push_back(readFailure(e));
+  }
+  return call.makeConcept(list);
+}
+
+} // namespace
+
+STELLA_OPERATOR("DEFI_LIST_INST", runDefiListInst);
+
+} // namespace stella
