@@ -10,9 +10,9 @@ const Field* ResultStep::field(const std::string& name) const {
   return it == fields.end() ? nullptr : it->second.get();
 }
 
-ResultStep& Result::addStep(double time) {
+ResultStep& Result::addStep(double time, int first) {
   ResultStep s;
-  s.number = steps.empty() ? 0 : steps.back().number + 1;
+  s.number = steps.empty() ? first : steps.back().number + 1;
   s.time = time;
   steps.push_back(std::move(s));
   return steps.back();

@@ -1,8 +1,8 @@
 #pragma once
 // A result concept (evol_elas, evol_noli): a sequence of stored steps, each with its storage
-// number (NUME_ORDRE, from 1 in code_aster's numbering... stella stores from 0 like code_aster's
-// first archived step 0 of STAT_NON_LINE), its time (INST) and fields by name (DEPL, SIEF_ELGA,
-// VARI_ELGA, CONT_NOEU, REAC_NODA...). Commands that extend a result (reuse=) add steps or fields.
+// number (NUME_ORDRE: STAT_NON_LINE stores its initial state as 0, MECA_STATIQUE starts at 1,
+// as in code_aster), its time (INST) and fields by name (DEPL, SIEF_ELGA, VARI_ELGA, CONT_NOEU,
+// REAC_NODA...). Commands that extend a result (reuse=) add steps or fields.
 // Shared contract (written first by the lead): extend it, do not replace it.
 
 #include "Field.hpp"
@@ -35,8 +35,8 @@ public:
 
   std::vector<ResultStep> steps;
 
-  // Adds a step after the last one (number = last + 1, or 0 for the first).
-  ResultStep& addStep(double time);
+  // Adds a step after the last one (number = last + 1, or `first` for the first).
+  ResultStep& addStep(double time, int first = 0);
   // The step stored at `time` within `precision` (relative unless `absolute`), or null.
   const ResultStep* stepAtTime(double time, double precision = 1.0e-6, bool absolute = false) const;
   const ResultStep* stepNumber(int number) const;
