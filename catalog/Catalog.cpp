@@ -3,6 +3,7 @@
 #include "Catalog.hpp"
 
 #include "CatalogLoader.hpp"
+#include "CatalogText.hpp"
 #include "CommandSpec.hpp"
 #include "Validator.hpp"
 
@@ -285,11 +286,11 @@ std::string jsonLevel(const Level& level) {
   return out + "]";
 }
 
-const char* kindName(CommandKind k) {
+} // namespace
+
+const char* commandKindName(CommandKind k) {
   return k == CommandKind::Oper ? "OPER" : k == CommandKind::Macro ? "MACRO" : "PROC";
 }
-
-} // namespace
 
 std::string describeResult(const CommandSpec& c) {
   if (!c.resultFrom.empty()) {
@@ -318,21 +319,15 @@ std::string describeReuse(const CommandSpec& c) {
   }
 }
 
-std::string describeKeywords(const CommandSpec& c) {
-  std::string out;
-  describeLevel(c.body, 2, out);
-  return out;
-}
-
 std::string Catalog::describe(const std::string& command) const {
   const CommandSpec* c = find(command);
   if (c == nullptr) {
     throw UserError(Diagnostic::fatal("CATALOG_12", "unknown command " + command)
                         .withNote("`stella catalog` lists the commands"));
   }
-  std::string out = c->name + " = " + kindName(c->kind) + "  -- " + c->description + "\n";
+  std::string out = c->name + " = " + commandKindName(c->kind) + "  -- " + c->description + "\n";
   out += "  returns: " + describeResult(*c) + "; " + describeReuse(*c) + "\n";
-  out += describeKeywords(*c);
+  describeLevel(c->body, 2, out);
   return out;
 }
 
@@ -342,7 +337,7 @@ std::string Catalog::toJson() const {
   for (const auto& [name, c] : impl_->loaded.commands) {
     out += first ? "" : ",";
     first = false;
-    out += "{\"name\":" + jsonString(name) + ",\"kind\":\"" + kindName(c->kind) +
+    out += "{\"name\":" + jsonString(name) + ",\"kind\":\"" + commandKindName(c->kind) +
            "\",\"description\":" + jsonString(c->description) +
            ",\"result\":" + jsonString(describeResult(*c)) + ",\"reentrant\":\"" +
            std::string(1, c->reentrant) + "\",\"reuse_keyword\":" + jsonString(c->reuseKeyword) + "," +

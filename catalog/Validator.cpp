@@ -363,15 +363,7 @@ private:
     std::map<std::string, Value> ruleDefaults;
     ActiveSet active = settle(level, given, env, ruleDefaults);
 
-    for (const KeywordArgument& k : keywords) {
-      if (active.byName.count(k.name) == 0) {
-        if (level.freeKeywords) {
-          tree.addSimple(SimpleKeyword{k.name, items(k.value ? *k.value : Value()), k.location, false});
-        } else {
-          reportNotAllowed(level, active, k, where);
-        }
-      }
-    }
+    std::size_t errorsBefore = errors_.size();
     std::vector<std::string> present;
     auto noteRename = [&](const std::string& name, const std::string& stored, const SourceLocation& loc) {
       if (stored == name) {
@@ -425,12 +417,24 @@ private:
         }
       }
     }
+    // Keywords not offered here. When a value of this level was wrong, the blocks it selects
+    // are unknown: "not allowed here" would then only be a consequence, so it is not reported.
+    bool valueErrors = errors_.size() != errorsBefore;
+    for (const KeywordArgument& k : keywords) {
+      if (active.byName.count(k.name) == 0) {
+        if (level.freeKeywords) {
+          tree.addSimple(SimpleKeyword{k.name, items(k.value ? *k.value : Value()), k.location, false});
+        } else {
+          reportNotAllowed(level, active, k, where, valueErrors);
+        }
+      }
+    }
     checkRules(active, present, at, where);
     return tree;
   }
 
   void reportNotAllowed(const Level& level, const ActiveSet& active, const KeywordArgument& k,
-                        const std::string& where) {
+                        const std::string& where, bool quietIfConditional) {
     if (std::find(level.outOfScope.begin(), level.outOfScope.end(), k.name) != level.outOfScope.end()) {
       error("CATALOG_SCOPE",
             "keyword " + k.name + " of " + where + " belongs to physics outside stella's scope", k.location,
@@ -442,6 +446,9 @@ private:
     collectAll(level, "", all);
     for (const auto& [name, condition] : all) {
       if (name == k.name) {
+        if (quietIfConditional) {
+          return;
+        }
         error("CATALOG_14",
               "keyword " + k.name + " is not allowed here in " + where + ": it requires " + condition,
               k.location);

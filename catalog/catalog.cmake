@@ -11,3 +11,7 @@ add_custom_command(
   COMMENT "Embedding the keyword catalogue"
   VERBATIM)
 target_sources(stella_catalog PRIVATE ${STELLA_CATALOG_GENERATED})
+
+# Developer tool: load checks, describe, JSON, doc generation, coverage (tools/catalog-coverage).
+add_executable(stella-catalog ${CMAKE_CURRENT_SOURCE_DIR}/tool/main.cpp)
+target_link_libraries(stella-catalog PRIVATE stella_catalog stella_options)

@@ -1,0 +1,560 @@
+// Tests of the built-in catalogue, through the real front end: small command files are run by
+// the Interpreter with a handler that validates every call against Catalog::builtin() (as
+// `stella check` does). Per command, tables of valid calls (with the defaults they must get)
+// and invalid calls (with the message ids they must produce), 2020 and 2025 spellings, and the
+// DEFI_CONTACT settings recommended by the contact notice.
+#include "catalog/Catalog.hpp"
+#include "catalog/CommandSpec.hpp"
+
+#include "interpreter/Interpreter.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+
+namespace stella {
+namespace {
+
+class ValidatingHandler : public CommandHandler {
+public:
+  std::vector<std::pair<std::string, ValidatedCall>> calls;
+  Value callCommand(const std::string& command, const CallArguments& args,
+                    const std::string& target) override {
+    ValidatedCall v = Catalog::builtin().validate(command, args);
+    std::string type = v.resultType;
+    calls.emplace_back(command, v);
+    if (command == "FIN") {
+      finished_ = true;
+    }
+    if (v.reused) {
+      return Value(v.reused);
+    }
+    if (type.empty()) {
+      return Value();
+    }
+    auto c = std::make_shared<Concept>();
+    c->name = target;
+    c->type = type;
+    return Value(c);
+  }
+  Value conceptAttribute(const std::shared_ptr<Concept>&, const std::string& name,
+                         const SourceLocation& at) override {
+    throw UserError(Diagnostic::fatal("TEST", "no attribute " + name, at));
+  }
+  bool finished() const override { return finished_; }
+
+private:
+  bool finished_ = false;
+};
+
+class Sink : public DiagnosticSink {
+public:
+  std::vector<Diagnostic> all;
+  void report(const Diagnostic& d) override { all.push_back(d); }
+  std::vector<std::string> ids() const {
+    std::vector<std::string> out;
+    for (const auto& d : all) {
+      if (d.severity == Severity::Fatal) {
+        out.push_back(d.id);
+      }
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+  std::string text() const {
+    std::string out;
+    for (const auto& d : all) {
+      out += formatDiagnostic(d) + "\n";
+    }
+    return out;
+  }
+};
+
+// Concepts every snippet can use, made by real calls so that they have catalogue types.
+const char* kPrelude = R"(
+MAIL = LIRE_MAILLAGE(UNITE=20, FORMAT='MED')
+MO = AFFE_MODELE(MAILLAGE=MAIL, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='D_PLAN'))
+ACIER = DEFI_MATERIAU(ELAS=_F(E=2.0e11, NU=0.3))
+MAT = AFFE_MATERIAU(MAILLAGE=MAIL, AFFE=_F(TOUT='OUI', MATER=ACIER))
+LOAD = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='Bas', DY=0.0), PRES_REP=_F(GROUP_MA='Haut', PRES=25.0))
+L1 = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, NOMBRE=4))
+TIMES = DEFI_LIST_INST(DEFI_LIST=_F(LIST_INST=L1))
+RAMPE = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0))
+)";
+
+struct RunResult {
+  Sink sink;
+  ValidatingHandler handler;
+  RunStatus status = RunStatus::Completed;
+  // The last validated call (the snippet's subject).
+  const ValidatedCall& last() const { return handler.calls.back().second; }
+};
+
+std::unique_ptr<RunResult> run(const std::string& snippet) {
+  auto r = std::make_unique<RunResult>();
+  Interpreter interp(r->handler, r->sink);
+  for (const auto& name : Catalog::builtin().commandNames()) {
+    interp.defineCommand(name);
+  }
+  r->status = interp.run(SourceFile::fromText("test.comm", std::string(kPrelude) + snippet));
+  return r;
+}
+
+::testing::AssertionResult valid(const RunResult& r) {
+  if (r.status == RunStatus::Completed || r.status == RunStatus::Finished) {
+    return ::testing::AssertionSuccess();
+  }
+  return ::testing::AssertionFailure() << r.sink.text();
+}
+
+const KeywordTree& zone(const ValidatedCall& v) {
+  return v.keywords.occurrences("ZONE").at(0);
+}
+
+TEST(BuiltinCatalog, LoadsCleanWithEveryDescription) {
+  std::vector<std::string> problems = Catalog::fromFiles({}).problems();
+  EXPECT_TRUE(problems.empty());
+  const Catalog& c = Catalog::builtin(); // throws listing every problem when broken
+  EXPECT_GE(c.commandNames().size(), 33u);
+  for (const char* name : {"DEBUT",          "POURSUITE",      "FIN",           "LIRE_MAILLAGE",
+                           "DEFI_GROUP",     "MODI_MAILLAGE",  "CREA_MAILLAGE", "MACR_INFO_MAIL",
+                           "AFFE_MODELE",    "DEFI_MATERIAU",  "AFFE_MATERIAU", "AFFE_CARA_ELEM",
+                           "AFFE_CHAR_MECA", "AFFE_CHAR_CINE", "DEFI_FONCTION", "FORMULE",
+                           "DEFI_LIST_REEL", "DEFI_LIST_INST", "DEFI_CONTACT",  "MECA_STATIQUE",
+                           "STAT_NON_LINE",  "DYNA_NON_LINE",  "CALC_CHAMP",    "CALC_PRESSION",
+                           "MODI_REPERE",    "POST_RELEVE_T",  "CREA_TABLE",    "IMPR_TABLE",
+                           "IMPR_RESU",      "TEST_RESU",      "TEST_TABLE",    "DETRUIRE"}) {
+    EXPECT_NE(c.find(name), nullptr) << name;
+  }
+  EXPECT_TRUE(c.problems().empty());
+}
+
+TEST(BuiltinCatalog, BrokenCatalogueIsReportedWithFileAndKeyword) {
+  Catalog c =
+      Catalog::fromFiles({{"common/TYPES.cata", "TYPES(modele=())\n"},
+                          {"CMD.cata", "CMD = OPER(result='modele', fr='x', regles=(UN_PARMI('A', 'B'),),\n"
+                                       "  A=SIMP(statut='f', typ='TXM', defaut='X', into=('Y',), fr='a'),\n"
+                                       "  C=SIMP(statut='f', typ='R', defaut='OUI'))\n"}});
+  std::vector<std::string> p = c.problems();
+  std::string all;
+  for (const auto& s : p) {
+    all += s + "\n";
+  }
+  EXPECT_NE(all.find("catalog/commands/CMD.cata: CMD: rule UN_PARMI(A, B) names the unknown keyword B"),
+            std::string::npos)
+      << all;
+  EXPECT_NE(all.find("CMD/A: default 'X' is not one of the allowed values"), std::string::npos) << all;
+  EXPECT_NE(all.find("CMD/C: no description"), std::string::npos) << all;
+  EXPECT_NE(all.find("CMD/C: default 'OUI' does not match the keyword's type"), std::string::npos) << all;
+}
+
+TEST(DefiContact, DefaultsOfTheDiscreteFormulation) {
+  auto r = run("CONT = DEFI_CONTACT(MODELE=MO, ZONE=_F(GROUP_MA_MAIT='Top_B', GROUP_MA_ESCL='Bottom_C'))\n");
+  ASSERT_TRUE(valid(*r));
+  const ValidatedCall& v = r->last();
+  EXPECT_EQ(v.resultType, "char_contact");
+  EXPECT_EQ(v.keywords.text("FORMULATION"), "DISCRETE");
+  EXPECT_EQ(v.keywords.text("REAC_GEOM"), "AUTOMATIQUE");
+  EXPECT_DOUBLE_EQ(v.keywords.real("RESI_GEOM"), 0.01);
+  EXPECT_EQ(v.keywords.integer("ITER_GEOM_MAXI"), 10);
+  EXPECT_EQ(v.keywords.text("PRE_COND"), "SANS");
+  EXPECT_FALSE(v.keywords.has("ALGO_RESO_CONT"));
+  EXPECT_EQ(zone(v).text("ALGO_CONT"), "CONTRAINTE");
+  EXPECT_EQ(zone(v).text("APPARIEMENT"), "MAIT_ESCL");
+  EXPECT_DOUBLE_EQ(zone(v).real("TOLE_PROJ_EXT"), 0.5);
+  EXPECT_FALSE(zone(v).has("COEF_CONT"));
+  EXPECT_FALSE(zone(v).has("COULOMB"));
+}
+
+TEST(DefiContact, SameKeywordDifferentDefaultsInExclusiveBlocks) {
+  auto newton = run("C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ALGO_RESO_GEOM='NEWTON', "
+                    "ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B'))\n");
+  ASSERT_TRUE(valid(*newton));
+  EXPECT_DOUBLE_EQ(newton->last().keywords.real("RESI_GEOM"), 1e-6);
+  EXPECT_FALSE(newton->last().keywords.has("REAC_GEOM"));
+  auto fixed = run(
+      "C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B'))\n");
+  ASSERT_TRUE(valid(*fixed));
+  EXPECT_DOUBLE_EQ(fixed->last().keywords.real("RESI_GEOM"), 0.01);
+  EXPECT_EQ(fixed->last().keywords.text("ALGO_RESO_CONT"), "NEWTON");
+  EXPECT_DOUBLE_EQ(fixed->last().keywords.real("RESI_CONT"), -1.0);
+  auto controle = run("C = DEFI_CONTACT(MODELE=MO, REAC_GEOM='CONTROLE', NB_ITER_GEOM=3, "
+                      "ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B'))\n");
+  ASSERT_TRUE(valid(*controle));
+  EXPECT_FALSE(controle->last().keywords.has("RESI_GEOM"));
+  EXPECT_EQ(controle->last().keywords.integer("NB_ITER_GEOM"), 3);
+}
+
+TEST(DefiContact, FiveZoneVariants) {
+  // (e) CONTINUE without friction, STANDARD.
+  auto e = run(
+      "C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B'))\n");
+  ASSERT_TRUE(valid(*e));
+  EXPECT_EQ(zone(e->last()).text("ALGO_CONT"), "STANDARD");
+  EXPECT_DOUBLE_EQ(zone(e->last()).real("COEF_CONT"), 100.0);
+  EXPECT_EQ(zone(e->last()).text("ADAPTATION"), "CYCLAGE");
+  EXPECT_EQ(zone(e->last()).text("INTEGRATION"), "AUTO");
+  EXPECT_EQ(zone(e->last()).text("CONTACT_INIT"), "INTERPENETRE");
+  EXPECT_FALSE(zone(e->last()).has("COULOMB"));
+  // (e) LAC: mortar pairing, both groups mandatory.
+  auto lac = run("C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ZONE=_F(GROUP_MA_MAIT='A', "
+                 "GROUP_MA_ESCL='B', ALGO_CONT='LAC'))\n");
+  ASSERT_TRUE(valid(*lac));
+  EXPECT_EQ(zone(lac->last()).text("APPARIEMENT"), "MORTAR");
+  EXPECT_EQ(zone(lac->last()).text("TYPE_JACOBIEN"), "INITIAL");
+  EXPECT_DOUBLE_EQ(zone(lac->last()).real("RESI_APPA"), 1e-8);
+  EXPECT_FALSE(zone(lac->last()).has("COEF_CONT"));
+  // (d) CONTINUE + COULOMB: COULOMB mandatory, friction defaults.
+  auto d = run("C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', FROTTEMENT='COULOMB', "
+               "ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B', COULOMB=0.3))\n");
+  ASSERT_TRUE(valid(*d));
+  EXPECT_EQ(d->last().keywords.text("ALGO_RESO_FROT"), "NEWTON");
+  EXPECT_DOUBLE_EQ(d->last().keywords.real("RESI_FROT"), 1e-4);
+  EXPECT_EQ(zone(d->last()).text("ALGO_FROT"), "STANDARD");
+  EXPECT_DOUBLE_EQ(zone(d->last()).real("COEF_FROT"), 100.0);
+  EXPECT_EQ(zone(d->last()).text("GRAND_GLIS"), "NON");
+  // (c) DISCRETE + COULOMB: E_T mandatory (penalised friction).
+  auto c = run("C = DEFI_CONTACT(MODELE=MO, FROTTEMENT='COULOMB', ZONE=_F(GROUP_MA_MAIT='A', "
+               "GROUP_MA_ESCL='B', COULOMB=0.2, E_T=1.e5))\n");
+  ASSERT_TRUE(valid(*c));
+  EXPECT_EQ(zone(c->last()).text("ALGO_FROT"), "PENALISATION");
+  EXPECT_DOUBLE_EQ(zone(c->last()).real("COEF_MATR_FROT"), 0.0);
+  // (a) LIAISON_UNIL.
+  auto a = run("C = DEFI_CONTACT(MODELE=MO, FORMULATION='LIAISON_UNIL', ZONE=_F(GROUP_NO='N', NOM_CMP='DX', "
+               "COEF_IMPO=RAMPE, COEF_MULT=RAMPE))\n");
+  ASSERT_TRUE(valid(*a));
+  EXPECT_EQ(zone(a->last()).text("ALGO_CONT"), "CONTRAINTE");
+  EXPECT_FALSE(a->last().keywords.has("LISSAGE"));
+}
+
+TEST(DefiContact, InvalidCallsNameTheProblem) {
+  // COEF_CONT does not exist in discrete contact (its penalty is E_N).
+  auto r =
+      run("C = DEFI_CONTACT(MODELE=MO, ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B', COEF_CONT=100.))\n");
+  EXPECT_EQ(r->sink.ids(), std::vector<std::string>{"CATALOG_14"}) << r->sink.text();
+  // Misspelt keyword: suggestion and allowed keywords.
+  r = run("C = DEFI_CONTACT(MODELE=MO, ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESC='B'))\n");
+  ASSERT_EQ(r->sink.ids(), std::vector<std::string>{"CATALOG_1"}) << r->sink.text();
+  EXPECT_NE(r->sink.text().find("did you mean 'GROUP_MA_ESCL'?"), std::string::npos) << r->sink.text();
+  // Penalisation needs E_N; LAC needs both groups; friction needs COULOMB: all at once.
+  r = run("C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', FROTTEMENT='COULOMB', "
+          "ZONE=(_F(GROUP_MA_ESCL='B', ALGO_CONT='LAC'),))\n");
+  EXPECT_EQ(r->sink.ids(), (std::vector<std::string>{"CATALOG_5", "CATALOG_5"})) << r->sink.text();
+  // Value not allowed, and XFEM refused as outside the scope.
+  r = run("C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINU', ZONE=_F(GROUP_MA_MAIT='A'))\n");
+  EXPECT_EQ(r->sink.ids(), std::vector<std::string>{"CATALOG_3"}) << r->sink.text();
+  r = run("C = DEFI_CONTACT(MODELE=MO, FORMULATION='XFEM', ZONE=_F(GROUP_MA_MAIT='A'))\n");
+  EXPECT_EQ(r->sink.ids(), std::vector<std::string>{"CATALOG_SCOPE"}) << r->sink.text();
+  // Wrong concept type.
+  r = run("C = DEFI_CONTACT(MODELE=MAIL, ZONE=_F(GROUP_MA_MAIT='A'))\n");
+  ASSERT_EQ(r->sink.ids(), std::vector<std::string>{"CATALOG_7"}) << r->sink.text();
+  EXPECT_NE(r->sink.text().find("MODELE expects modele; MAIL is a maillage"), std::string::npos)
+      << r->sink.text();
+  // Real expected.
+  r = run("C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B', "
+          "COEF_CONT='OUI'))\n");
+  ASSERT_EQ(r->sink.ids(), std::vector<std::string>{"CATALOG_2"}) << r->sink.text();
+  EXPECT_NE(r->sink.text().find("COEF_CONT expects a real, got 'OUI'"), std::string::npos);
+}
+
+// Settings the contact notice recommends, each written as a user would.
+TEST(DefiContact, NoticeRecommendationsValidate) {
+  const char* calls[] = {
+      "C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ZONE=_F(GROUP_MA_MAIT='Top_B', "
+      "GROUP_MA_ESCL='Bottom_C', ALGO_CONT='LAC'))",
+      "C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B', "
+      "ALGO_CONT='LAC', TYPE_JACOBIEN='ACTUALISE'))",
+      "C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B', "
+      "ALGO_CONT='PENALISATION', ADAPTATION='ADAPT_COEF', PENE_MAXI=1.e-3))",
+      "C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B', "
+      "ALGO_CONT='PENALISATION', ADAPTATION='TOUT'))",
+      "C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B', "
+      "ALGO_CONT='PENALISATION', COEF_PENA_CONT=1.e6))",
+      "C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', FROTTEMENT='COULOMB', REAC_GEOM='CONTROLE', "
+      "NB_ITER_GEOM=2, ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B', ALGO_CONT='STANDARD', "
+      "ALGO_FROT='PENALISATION', COEF_PENA_FROT=1.e4, COULOMB=0.1))",
+      "C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', FROTTEMENT='COULOMB', "
+      "ALGO_RESO_FROT='POINT_FIXE', ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B', COULOMB=0.3, "
+      "ADAPTATION='TOUT'))",
+      "C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', FROTTEMENT='COULOMB', ZONE=_F(GROUP_MA_MAIT='A', "
+      "GROUP_MA_ESCL='B', COULOMB=0.3, SANS_GROUP_NO_FR='ARETE', DIRE_EXCL_FROT=(1, 0, 0)))",
+      "C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ALGO_RESO_CONT='POINT_FIXE', "
+      "ALGO_RESO_GEOM='NEWTON', ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B', CONTACT_INIT='NON'))",
+      "C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B', "
+      "CONTACT_INIT='OUI', INTEGRATION='NCOTES', ORDRE_INT=6))",
+      "C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B', "
+      "ADAPTATION='NON'))",
+      "C = DEFI_CONTACT(MODELE=MO, FORMULATION='DISCRETE', RECH_LINEAIRE='NON_ADMISSIBLE', "
+      "PRE_COND='DIRICHLET', ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B', ALGO_CONT='GCP'))",
+      "C = DEFI_CONTACT(MODELE=MO, FORMULATION='DISCRETE', ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B', "
+      "ALGO_CONT='PENALISATION', E_N=1.e10))",
+      "C = DEFI_CONTACT(MODELE=MO, FORMULATION='DISCRETE', ZONE=(_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B', "
+      "RESOLUTION='NON'), _F(GROUP_MA_MAIT='C', GROUP_MA_ESCL='D', APPARIEMENT='NODAL')))",
+      "C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B', "
+      "ALGO_CONT='LAC', APPARIEMENT='MORTAR'))",
+      "C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B', "
+      "ADAPTATION='TOUT'))",
+  };
+  for (const char* call : calls) {
+    auto r = run(std::string(call) + "\n");
+    EXPECT_TRUE(valid(*r)) << call;
+  }
+}
+
+TEST(StatNonLine, DefaultedFactorsAndRuleDefaults) {
+  auto r = run(
+      "C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B'))\n"
+      "RES = STAT_NON_LINE(MODELE=MO, CHAM_MATER=MAT, EXCIT=_F(CHARGE=LOAD, FONC_MULT=RAMPE), CONTACT=C,\n"
+      "                    INCREMENT=_F(LIST_INST=TIMES))\n");
+  ASSERT_TRUE(valid(*r));
+  const KeywordTree& k = r->last().keywords;
+  EXPECT_EQ(r->last().resultType, "evol_noli");
+  ASSERT_TRUE(k.factor("CONVERGENCE"));
+  EXPECT_TRUE(k.factor("CONVERGENCE")->defaulted);
+  const KeywordTree& conv = k.occurrences("CONVERGENCE")[0];
+  EXPECT_DOUBLE_EQ(conv.real("RESI_GLOB_RELA"), 1e-6);
+  EXPECT_EQ(conv.integer("ITER_GLOB_MAXI"), 10);
+  const KeywordTree& comp = k.occurrences("COMPORTEMENT")[0];
+  EXPECT_EQ(comp.text("RELATION"), "ELAS");
+  EXPECT_EQ(comp.text("DEFORMATION"), "PETIT");
+  EXPECT_EQ(comp.text("TOUT"), "OUI");
+  EXPECT_EQ(k.occurrences("NEWTON")[0].text("MATRICE"), "TANGENTE");
+  EXPECT_EQ(k.occurrences("SOLVEUR")[0].text("METHODE"), "MUMPS");
+  EXPECT_EQ(k.occurrences("SOLVEUR")[0].text("ELIM_LAGR"), "LAGR2");
+  EXPECT_EQ(k.occurrences("ARCHIVAGE")[0].integer("PAS_ARCH"), 1);
+  EXPECT_EQ(k.occurrences("ARCHIVAGE")[0].texts("CHAM_EXCLU"),
+            (std::vector<std::string>{"RESI_NOEU", "RESI_RELA_NOEU"}));
+  EXPECT_EQ(k.occurrences("EXCIT")[0].text("TYPE_CHARGE"), "FIXE_CSTE");
+  EXPECT_FALSE(k.has("RECH_LINEAIRE"));
+
+  auto maxi = run(
+      "RES = STAT_NON_LINE(MODELE=MO, CHAM_MATER=MAT, EXCIT=_F(CHARGE=LOAD), INCREMENT=_F(LIST_INST=TIMES),\n"
+      "                    CONVERGENCE=_F(RESI_GLOB_MAXI=1.e-5), SOLVEUR=_F(METHODE='MULT_FRONT'))\n");
+  ASSERT_TRUE(valid(*maxi));
+  EXPECT_FALSE(maxi->last().keywords.occurrences("CONVERGENCE")[0].has("RESI_GLOB_RELA"));
+  EXPECT_EQ(maxi->last().keywords.occurrences("SOLVEUR")[0].text("RENUM"), "MDA");
+}
+
+TEST(StatNonLine, InvalidCalls) {
+  // CHARGE expects char_meca or char_cine_meca.
+  auto r = run("RES = STAT_NON_LINE(MODELE=MO, CHAM_MATER=MAT, EXCIT=_F(CHARGE=MAIL), "
+               "INCREMENT=_F(LIST_INST=TIMES))\n");
+  ASSERT_EQ(r->sink.ids(), std::vector<std::string>{"CATALOG_7"}) << r->sink.text();
+  EXPECT_NE(r->sink.text().find("CHARGE expects char_meca or char_cine_meca; MAIL is a maillage"),
+            std::string::npos);
+  // Missing INCREMENT; PRESENT_ABSENT broken in CONVERGENCE; reuse of a non re-entrant value.
+  r = run("RES = STAT_NON_LINE(MODELE=MO, CHAM_MATER=MAT, CONVERGENCE=_F(RESI_REFE_RELA=1.e-3, "
+          "SIGM_REFE=1.0, RESI_GLOB_RELA=1.e-6))\n");
+  EXPECT_EQ(r->sink.ids(), (std::vector<std::string>{"CATALOG_5", "CATALOG_6"})) << r->sink.text();
+  // Superelements are outside the scope.
+  r = run("RES = STAT_NON_LINE(MODELE=MO, CHAM_MATER=MAT, INCREMENT=_F(LIST_INST=TIMES), "
+          "SOUS_STRUC=_F(CAS_CHARGE='A', TOUT='OUI'))\n");
+  EXPECT_EQ(r->sink.ids(), std::vector<std::string>{"CATALOG_SCOPE"}) << r->sink.text();
+  // A one-element tuple is a scalar; two values are too many.
+  r = run("RES = STAT_NON_LINE(MODELE=MO, CHAM_MATER=MAT, INCREMENT=_F(LIST_INST=TIMES), "
+          "NEWTON=_F(REAC_ITER=(1, 2)))\n");
+  EXPECT_EQ(r->sink.ids(), std::vector<std::string>{"CATALOG_4"}) << r->sink.text();
+  r = run("RES = STAT_NON_LINE(MODELE=MO, CHAM_MATER=MAT, INCREMENT=_F(LIST_INST=TIMES), "
+          "NEWTON=_F(REAC_ITER=(1,)))\n");
+  EXPECT_TRUE(valid(*r));
+}
+
+TEST(StatNonLine, ReuseMayBeGiven) {
+  auto r =
+      run("RES = STAT_NON_LINE(MODELE=MO, CHAM_MATER=MAT, EXCIT=_F(CHARGE=LOAD), "
+          "INCREMENT=_F(LIST_INST=TIMES, INST_FIN=0.5))\n"
+          "RES = STAT_NON_LINE(reuse=RES, RESULTAT=RES, MODELE=MO, CHAM_MATER=MAT, EXCIT=_F(CHARGE=LOAD),\n"
+          "                    ETAT_INIT=_F(EVOL_NOLI=RES), INCREMENT=_F(LIST_INST=TIMES, INST_INIT=0.5))\n");
+  ASSERT_TRUE(valid(*r));
+  EXPECT_NE(r->last().reused, nullptr);
+  EXPECT_DOUBLE_EQ(r->last().keywords.occurrences("INCREMENT")[0].real("PRECISION"), 1e-6);
+  // DEFI_CONTACT never reuses; MODI_MAILLAGE must.
+  auto n = run("C = DEFI_CONTACT(reuse=MO, MODELE=MO, ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B'))\n");
+  EXPECT_EQ(n->sink.ids(), std::vector<std::string>{"CATALOG_11"});
+  auto o = run("MAIL2 = MODI_MAILLAGE(MAILLAGE=MAIL, ORIE_PEAU=_F(GROUP_MA_PEAU='Haut'))\n");
+  EXPECT_EQ(o->sink.ids(), std::vector<std::string>{"CATALOG_11"});
+}
+
+TEST(Generations, OriePeau2020And2025GiveOneInternalForm) {
+  auto r2025 =
+      run("MAIL = MODI_MAILLAGE(reuse=MAIL, MAILLAGE=MAIL, ORIE_PEAU=_F(GROUP_MA_PEAU=('Haut', 'Bas')))\n");
+  ASSERT_TRUE(valid(*r2025));
+  auto r2020 =
+      run("MAIL = MODI_MAILLAGE(reuse=MAIL, MAILLAGE=MAIL, ORIE_PEAU_2D=_F(GROUP_MA=('Haut', 'Bas')))\n");
+  ASSERT_TRUE(valid(*r2020));
+  for (const RunResult* r : {r2025.get(), r2020.get()}) {
+    const auto& occ = r->last().keywords.occurrences("ORIE_PEAU");
+    ASSERT_EQ(occ.size(), 1u);
+    EXPECT_EQ(occ[0].texts("GROUP_MA_PEAU"), (std::vector<std::string>{"Haut", "Bas"}));
+    EXPECT_FALSE(r->last().keywords.has("ORIE_PEAU_2D"));
+  }
+  auto both = run("MAIL = MODI_MAILLAGE(reuse=MAIL, MAILLAGE=MAIL, ORIE_PEAU_3D=_F(GROUP_MA='A', "
+                  "GROUP_MA_VOLU='V'), ORIE_PEAU=_F(GROUP_MA_PEAU='B'))\n");
+  EXPECT_FALSE(valid(*both));
+}
+
+TEST(Generations, DebutCodeFactorOf2020) {
+  auto r2020 = run("DEBUT(CODE=_F(NIV_PUB_WEB='INTERNET'))\n");
+  ASSERT_TRUE(valid(*r2020));
+  EXPECT_EQ(r2020->last().keywords.text("CODE"), "OUI");
+  auto r2025 = run("DEBUT(CODE='OUI')\n");
+  ASSERT_TRUE(valid(*r2025));
+  EXPECT_EQ(r2025->last().keywords.text("CODE"), "OUI");
+  EXPECT_TRUE(r2025->last().keywords.factor("DEBUG")->defaulted);
+  EXPECT_EQ(r2025->last().keywords.occurrences("DEBUG")[0].text("SDVERI"), "NON");
+}
+
+TEST(Generations, EchecSubKeywordsOf2020) {
+  auto r = run("T2 = DEFI_LIST_INST(DEFI_LIST=_F(LIST_INST=L1), ECHEC=_F(SUBD_PAS=4, SUBD_NIVEAU=10))\n");
+  ASSERT_TRUE(valid(*r));
+  const KeywordTree& echec = r->last().keywords.occurrences("ECHEC")[0];
+  EXPECT_EQ(echec.text("EVENEMENT"), "ERREUR");
+  EXPECT_EQ(echec.text("ACTION"), "DECOUPE");
+  EXPECT_EQ(echec.integer("SUBD_PAS"), 4);
+  EXPECT_EQ(echec.integer("SUBD_NIVEAU"), 10);
+  auto d = run("T2 = DEFI_LIST_INST(DEFI_LIST=_F(LIST_INST=L1))\n");
+  ASSERT_TRUE(valid(*d));
+  EXPECT_TRUE(d->last().keywords.factor("ECHEC")->defaulted);
+  EXPECT_EQ(d->last().keywords.occurrences("ECHEC")[0].integer("SUBD_PAS"), 4);
+  EXPECT_FALSE(d->last().keywords.has("ADAPTATION")); // only with METHODE='AUTO'
+}
+
+TEST(Generations, NoeudKeywordsOf2020) {
+  auto r = run("L2 = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(NOEUD=('N1', 'N2'), DX=0.0), "
+               "FORCE_NODALE=_F(NOEUD='N3', FY=-1.0))\n");
+  EXPECT_TRUE(valid(*r));
+}
+
+TEST(Commands, ValidTable) {
+  const char* calls[] = {
+      "DEBUT()",
+      "POURSUITE()",
+      "FIN()",
+      "M2 = LIRE_MAILLAGE(FORMAT='GMSH', UNITE=19)",
+      "MAIL = DEFI_GROUP(reuse=MAIL, MAILLAGE=MAIL, CREA_GROUP_NO=_F(GROUP_MA='Haut'), "
+      "CREA_GROUP_MA=_F(NOM='TOUS', TOUT='OUI'))",
+      "M3 = CREA_MAILLAGE(MAILLAGE=MAIL, DECOUPE_LAC=_F(GROUP_MA_ESCL='Bottom_C'))",
+      "M4 = CREA_MAILLAGE(MAILLAGE=MAIL, LINE_QUAD=_F())",
+      "MACR_INFO_MAIL(MAILLAGE=MAIL, QUALITE='OUI')",
+      "CARA = AFFE_CARA_ELEM(MODELE=MO, DISCRET_2D=_F(CARA='K_T_D_N', GROUP_MA='SPRING', VALE=(0., "
+      "1.0e-1,)))",
+      "LC = AFFE_CHAR_CINE(MODELE=MO, MECA_IMPO=_F(GROUP_MA='Bas', DX=0.0, DY=0.0))",
+      "F1 = FORMULE(VALE='p0*INST', NOM_PARA='INST', p0=2.0)",
+      "LR = DEFI_LIST_REEL(VALE=(0.0, 0.5, 1.0))",
+      "T2 = DEFI_LIST_INST(METHODE='AUTO', DEFI_LIST=_F(LIST_INST=L1, PAS_MINI=1.e-6))",
+      "R1 = MECA_STATIQUE(MODELE=MO, CHAM_MATER=MAT, EXCIT=_F(CHARGE=LOAD))",
+      "R2 = DYNA_NON_LINE(MODELE=MO, CHAM_MATER=MAT, EXCIT=_F(CHARGE=LOAD), INCREMENT=_F(LIST_INST=TIMES), "
+      "SCHEMA_TEMPS=_F(SCHEMA='HHT', FORMULATION='DEPLACEMENT'))",
+      "R1 = MECA_STATIQUE(MODELE=MO, CHAM_MATER=MAT, EXCIT=_F(CHARGE=LOAD))\nR1 = CALC_CHAMP(reuse=R1, "
+      "RESULTAT=R1, CONTRAINTE=('SIGM_NOEU',), FORCE='REAC_NODA')",
+      "R = STAT_NON_LINE(MODELE=MO, CHAM_MATER=MAT, EXCIT=_F(CHARGE=LOAD), INCREMENT=_F(LIST_INST=TIMES))\nR "
+      "= CALC_PRESSION(reuse=R, MAILLAGE=MAIL, RESULTAT=R, GROUP_MA=('Bottom_C', 'Top_B', ), INST=1.0)",
+      "R = STAT_NON_LINE(MODELE=MO, CHAM_MATER=MAT, EXCIT=_F(CHARGE=LOAD), INCREMENT=_F(LIST_INST=TIMES))\n"
+      "RESU = MODI_REPERE(RESULTAT=R, NUME_ORDRE=1, MODI_CHAM=(_F(NOM_CHAM='CONT_NOEU', NOM_CMP=('RNX', "
+      "'RNY', 'RNZ', ), TYPE_CHAM='VECT_3D', ), ), REPERE='UTILISATEUR', AFFE=_F(ANGL_NAUT=(45, 45, 0), ))",
+      "R = STAT_NON_LINE(MODELE=MO, CHAM_MATER=MAT, EXCIT=_F(CHARGE=LOAD), INCREMENT=_F(LIST_INST=TIMES))\n"
+      "TAB = POST_RELEVE_T(ACTION=_F(OPERATION='EXTRACTION', INTITULE='JEU', RESULTAT=R, "
+      "NOM_CHAM='CONT_NOEU', NOM_CMP='JEU', GROUP_NO='Bas'))\n"
+      "IMPR_TABLE(TABLE=TAB)\n"
+      "TEST_TABLE(TABLE=TAB, NOM_PARA='JEU', VALE_CALC=-5.0, VALE_REFE=-5.0, REFERENCE='ANALYTIQUE', "
+      "FILTRE=_F(NOM_PARA='INST', VALE=1.0))",
+      "TB = CREA_TABLE(LISTE=(_F(PARA='X', LISTE_R=(1.0, 2.0)), _F(PARA='N', LISTE_I=(1, 2))))",
+      "R = STAT_NON_LINE(MODELE=MO, CHAM_MATER=MAT, EXCIT=_F(CHARGE=LOAD), INCREMENT=_F(LIST_INST=TIMES))\n"
+      "IMPR_RESU(FORMAT='MED', RESU=_F(RESULTAT=R, NOM_CHAM=('DEPL', 'CONT_NOEU')))\n"
+      "TEST_RESU(RESU=_F(RESULTAT=R, INST=1.0, NOM_CHAM='DEPL', NOM_CMP='LAGS_C', TYPE_TEST='MIN', "
+      "VALE_CALC=-25.0, VALE_REFE=-25.0, REFERENCE='ANALYTIQUE'))",
+      "DETRUIRE(CONCEPT=_F(NOM=RAMPE))",
+      "DETRUIRE(NOM=(RAMPE, L1))",
+  };
+  for (const char* call : calls) {
+    auto r = run(std::string(call) + "\n");
+    EXPECT_TRUE(valid(*r)) << call;
+  }
+}
+
+TEST(Commands, DefaultsOfSeveralCommands) {
+  auto r = run("M2 = LIRE_MAILLAGE()\n");
+  ASSERT_TRUE(valid(*r));
+  EXPECT_EQ(r->last().keywords.text("FORMAT"), "MED");
+  EXPECT_EQ(r->last().keywords.integer("UNITE"), 20);
+  EXPECT_EQ(r->last().keywords.text("PARTITIONNEUR"), "SANS");
+  EXPECT_DOUBLE_EQ(r->last().keywords.occurrences("VERI_MAIL")[0].real("APLAT"), 1e-3);
+  auto f = run("F2 = DEFI_FONCTION(NOM_PARA='X', VALE_C=(0.0, 1.0, 2.0, 1.0, 2.0, 3.0))\n");
+  ASSERT_TRUE(valid(*f));
+  EXPECT_EQ(f->last().resultType, "fonction_c");
+  EXPECT_EQ(f->last().keywords.text("PROL_DROITE"), "EXCLU");
+  auto t = run(
+      "R = STAT_NON_LINE(MODELE=MO, CHAM_MATER=MAT, EXCIT=_F(CHARGE=LOAD), INCREMENT=_F(LIST_INST=TIMES))\n"
+      "TEST_RESU(RESU=_F(RESULTAT=R, NUME_ORDRE=1, NOM_CHAM='DEPL', GROUP_NO='A', NOM_CMP='DY', "
+      "VALE_CALC=1.0, REFERENCE='ANALYTIQUE', VALE_REFE=1.0))\n");
+  ASSERT_TRUE(valid(*t));
+  const KeywordTree& resu = t->last().keywords.occurrences("RESU")[0];
+  EXPECT_DOUBLE_EQ(resu.real("PRECISION"), 1e-3);
+  EXPECT_FALSE(resu.has("TOLE_MACHINE")); // no default in RESU
+  EXPECT_EQ(resu.text("VALE_ABS"), "NON");
+}
+
+TEST(Commands, InvalidTable) {
+  struct Case {
+    const char* call;
+    std::vector<std::string> ids;
+  };
+  const Case cases[] = {
+      {"MO2 = AFFE_MODELE(MAILLAGE=MAIL, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='D_PLANE'))",
+       {"CATALOG_3"}},
+      {"MO2 = AFFE_MODELE(MAILLAGE=MAIL, AFFE=_F(TOUT='OUI', GROUP_MA='A', PHENOMENE='MECANIQUE', "
+       "MODELISATION='3D'))",
+       {"CATALOG_6"}},
+      {"MO2 = AFFE_MODELE(MAILLAGE=MAIL, AFFE=_F(TOUT='OUI', PHENOMENE='THERMIQUE', MODELISATION='PLAN'))",
+       {"CATALOG_SCOPE"}},
+      {"A2 = DEFI_MATERIAU(ELAS=_F(E=2.e11))", {"CATALOG_6"}},
+      {"A2 = DEFI_MATERIAU(ELAS=_F(E=2.e11, NU=0.7))", {"CATALOG_8"}},
+      {"A2 = DEFI_MATERIAU(THER=_F(LAMBDA=1.0))", {"CATALOG_SCOPE"}},
+      {"LR = DEFI_LIST_REEL(VALE=(0.0, 1.0), DEBUT=0.0)", {"CATALOG_6", "CATALOG_6"}},
+      {"LR = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0))", {"CATALOG_6"}},
+      {"F2 = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0,))", {"CATALOG_4"}},
+      {"L2 = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_NO='A', DX='0'))", {"CATALOG_2"}},
+      {"L2 = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_NO='A'))", {"CATALOG_6"}},
+      {"L2 = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_NO='A', UI2=0.0))", {"CATALOG_SCOPE"}},
+      {"L2 = AFFE_CHAR_CINE(MODELE=MO, MECA_IMPO=_F(GROUP_NO='A', LAGS_C=0.0))", {"CATALOG_SCOPE"}},
+      {"L2 = AFFE_CHAR_MECA(MODELE=MO)", {"CATALOG_6"}},
+      {"TEST_RESU(RESU=_F(RESULTAT=RAMPE, INST=1.0, NOM_CHAM='DEPL', NOM_CMP='DX', VALE_CALC=1.0))",
+       {"CATALOG_7"}},
+      {"IMPR_RESU(FORMAT='MED', RESU=_F(NOM_CHAM='DEPL'))", {"CATALOG_14"}},
+      {"DEBUT(CODE='YES')", {"CATALOG_3"}},
+      {"LOAD = AFFE_CHAR_MECA(MODELE=MO, PESANTEUR=_F(GRAVITE=9.81, DIRECTION=(0., -1.)))", {"CATALOG_4"}},
+      {"X = FOO(A=1)", {"CATALOG_12"}},
+  };
+  for (const Case& c : cases) {
+    auto r = run(std::string(c.call) + "\n");
+    std::vector<std::string> expected = c.ids;
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(r->sink.ids(), expected) << c.call << "\n" << r->sink.text();
+  }
+}
+
+TEST(Commands, ErrorsAreLocatedAtTheKeyword) {
+  auto r =
+      run("C = DEFI_CONTACT(MODELE=MO,\n    ZONE=_F(GROUP_MA_MAIT='A',\n            GROUP_MA_ESC='B'))\n");
+  ASSERT_EQ(r->sink.all.size(), 1u) << r->sink.text();
+  const Diagnostic& d = r->sink.all[0];
+  int preludeLines =
+      static_cast<int>(std::count(kPrelude, kPrelude + std::char_traits<char>::length(kPrelude), '\n'));
+  EXPECT_EQ(d.location.line, preludeLines + 3);
+  EXPECT_EQ(d.location.column, 13);
+}
+
+TEST(Catalog, DescribeAndJson) {
+  const Catalog& c = Catalog::builtin();
+  std::string tree = c.describe("DEFI_CONTACT");
+  EXPECT_NE(tree.find("FORMULATION : TXM f default='DISCRETE'"), std::string::npos) << tree.substr(0, 2000);
+  EXPECT_NE(tree.find("BLOC b_affe_continue if"), std::string::npos);
+  std::string json = c.toJson();
+  EXPECT_NE(json.find("\"name\":\"DEFI_CONTACT\""), std::string::npos);
+  EXPECT_EQ(std::count(json.begin(), json.end(), '{'), std::count(json.begin(), json.end(), '}'));
+  EXPECT_THROW(c.describe("NOPE"), UserError);
+}
+
+} // namespace
+} // namespace stella
