@@ -1,0 +1,94 @@
+#pragma once
+// One facade for every linear solver of SOLVEUR (METHODE='MUMPS', 'MULT_FRONT', 'LDLT',
+// 'GCPC'): analyse the pattern once, factorise the values at each Newton iteration, solve for
+// one or a block of right-hand sides as many times as needed (contact sub-iterations reuse the
+// factorisation).
+//
+// Backends by matrix kind:
+//   MUMPS       symmetric, positive definite or indefinite e.g. with Lagrange multipliers
+//               (SYM=2, as code_aster), unsymmetric (SYM=0); PCENT_PIVOT = ICNTL(14), RENUM = ICNTL(7),
+//               null pivots detected with ICNTL(24) and CNTL(3) = 10^-NPREC.
+//   MULT_FRONT, LDLT (SuiteSparse)  CHOLMOD supernodal LL^T when symmetric positive definite;
+//               UMFPACK LU when symmetric indefinite (dualised Lagrange multipliers make the
+//               matrix indefinite; an LDL^T without pivoting can meet a zero pivot) or unsymmetric.
+//   GCPC        Eigen conjugate gradient with an incomplete Cholesky preconditioner, symmetric
+//               positive definite only (constraints must be eliminated, AFFE_CHAR_CINE).
+// A singular matrix raises SingularMatrixError with the equation number of the null pivot.
+
+#include "solver/linalg/SparseMatrix.hpp"
+
+#include <Eigen/Dense>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace stella::linalg {
+
+enum class MatrixKind { SymmetricPositiveDefinite, SymmetricIndefinite, Unsymmetric };
+enum class SolverMethod { Mumps, MultFront, Ldlt, Gcpc, Petsc };
+
+std::optional<SolverMethod> solverMethodFromName(std::string_view name); // 'MUMPS', ...
+
+struct SolverOptions {
+  SolverMethod method = SolverMethod::Mumps;
+  double pivotPercent = 20.0;       // PCENT_PIVOT
+  std::string renumbering = "AUTO"; // RENUM: AUTO, AMD, AMF, PORD, METIS, QAMD, SCOTCH
+  int nprec = 8;                    // NPREC: a pivot below 10^-NPREC (relative) is null
+  bool stopIfSingular = true;       // STOP_SINGULIER
+  double relativeResidual = 1e-6;   // RESI_RELA (GCPC)
+  int maxIterations = 0;            // NMAX_ITER (GCPC); 0: the system size
+};
+
+// The matrix is singular: `equation` is the null pivot's equation (-1 if the backend could not
+// tell), to be named as node and DOF through the DofNumbering.
+class SingularMatrixError : public std::runtime_error {
+public:
+  SingularMatrixError(std::string backend, int equation)
+      : std::runtime_error(backend + ": singular matrix (null pivot at equation " + std::to_string(equation) +
+                           ")"),
+        backend_(std::move(backend)), equation_(equation) {}
+  int equation() const { return equation_; }
+  const std::string& backend() const { return backend_; }
+
+private:
+  std::string backend_;
+  int equation_;
+};
+
+// Any other failure of a solver (memory, non-convergence of GCPC, unsupported combination).
+class LinearSolverError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+class LinearSolver {
+public:
+  virtual ~LinearSolver() = default;
+  virtual std::string_view backendName() const = 0;
+  MatrixKind kind() const { return kind_; }
+  // Symbolic analysis (ordering) of the matrix's pattern; values are not read.
+  virtual void analyse(const SparseMatrix& a) = 0;
+  // Numerical factorisation of a matrix with the analysed pattern.
+  virtual void factorise(const SparseMatrix& a) = 0;
+  // Solves in place for every column of `rhs` (n x k) with the last factorisation.
+  virtual void solve(Eigen::Ref<Eigen::MatrixXd> rhs) = 0;
+
+protected:
+  explicit LinearSolver(MatrixKind k) : kind_(k) {}
+
+private:
+  MatrixKind kind_;
+};
+
+// Storage a kind needs: Upper for symmetric kinds, Full for unsymmetric.
+inline Storage storageFor(MatrixKind k) {
+  return k == MatrixKind::Unsymmetric ? Storage::Full : Storage::Upper;
+}
+
+// Throws LinearSolverError for combinations not available (PETSC; GCPC on indefinite or
+// unsymmetric matrices).
+std::unique_ptr<LinearSolver> makeLinearSolver(const SolverOptions& options, MatrixKind kind);
+
+} // namespace stella::linalg

@@ -1,0 +1,156 @@
+// MUMPS backend (sequential library, double precision C interface).
+
+#include "solver/linalg/Backends.hpp"
+
+#include <dmumps_c.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace stella::linalg::detail {
+namespace {
+
+constexpr int jobInit = -1, jobEnd = -2, jobAnalyse = 1, jobFactorise = 2, jobSolve = 3;
+constexpr int useCommWorld = -987654; // MUMPS's code for the (sequential) world communicator
+
+int orderingCode(const std::string& renum) {
+  if (renum == "AMD") {
+    return 0;
+  }
+  if (renum == "AMF") {
+    return 2;
+  }
+  if (renum == "SCOTCH") {
+    return 3;
+  }
+  if (renum == "PORD") {
+    return 4;
+  }
+  if (renum == "METIS") {
+    return 5;
+  }
+  if (renum == "QAMD") {
+    return 6;
+  }
+  return 7; // AUTO
+}
+
+class MumpsSolver final : public LinearSolver {
+public:
+  MumpsSolver(const SolverOptions& o, MatrixKind k) : LinearSolver(k), options_(o) {
+    id_ = {};
+    id_.comm_fortran = useCommWorld;
+    id_.par = 1;
+    // SYM=2 (general symmetric) also for positive definite matrices: with SYM=1 the null-pivot
+    // detection of ICNTL(24) let a floating structure through in our tests.
+    id_.sym = k == MatrixKind::Unsymmetric ? 0 : 2;
+    id_.job = jobInit;
+    dmumps_c(&id_);
+    if (id_.infog[0] < 0) {
+      throw LinearSolverError("MUMPS: initialisation failed (INFOG(1) = " + std::to_string(id_.infog[0]) +
+                              ")");
+    }
+    id_.icntl[0] = -1; // no error output
+    id_.icntl[1] = -1;
+    id_.icntl[2] = -1;
+    id_.icntl[3] = 0;
+    id_.icntl[6] = orderingCode(o.renumbering);                    // ICNTL(7)
+    id_.icntl[13] = static_cast<int>(std::lround(o.pivotPercent)); // ICNTL(14)
+    id_.icntl[23] = 1;                                             // ICNTL(24): null pivot detection
+    id_.cntl[2] = std::pow(10.0, -o.nprec);                        // CNTL(3): relative threshold
+    initialised_ = true;
+  }
+  ~MumpsSolver() override {
+    if (initialised_) {
+      id_.job = jobEnd;
+      dmumps_c(&id_);
+    }
+  }
+  MumpsSolver(const MumpsSolver&) = delete;
+  MumpsSolver& operator=(const MumpsSolver&) = delete;
+
+  std::string_view backendName() const override { return "MUMPS"; }
+
+  void analyse(const SparseMatrix& a) override {
+    if (a.storage() != storageFor(kind())) {
+      throw LinearSolverError("MUMPS: matrix storage does not match the matrix kind");
+    }
+    const SparsePattern& p = a.pattern();
+    irn_.resize(static_cast<std::size_t>(p.nonZeros()));
+    jcn_.resize(irn_.size());
+    for (int i = 0; i < p.size; ++i) {
+      for (auto k = p.rowStart[static_cast<std::size_t>(i)]; k < p.rowStart[static_cast<std::size_t>(i) + 1];
+           ++k) {
+        irn_[static_cast<std::size_t>(k)] = i + 1;
+        jcn_[static_cast<std::size_t>(k)] = p.columns[static_cast<std::size_t>(k)] + 1;
+      }
+    }
+    id_.n = p.size;
+    id_.nnz = p.nonZeros();
+    id_.irn = irn_.data();
+    id_.jcn = jcn_.data();
+    id_.job = jobAnalyse;
+    dmumps_c(&id_);
+    check("analysis");
+  }
+
+  void factorise(const SparseMatrix& a) override {
+    id_.a = const_cast<double*>(a.values().data()); // MUMPS does not modify A
+    for (int attempt = 0;; ++attempt) {
+      id_.job = jobFactorise;
+      dmumps_c(&id_);
+      // -8, -9, -11, -12, -13 (too little workspace): relax the memory estimate and retry
+      const int info = id_.infog[0];
+      if ((info == -8 || info == -9 || info == -11 || info == -12 || info == -14 || info == -15) &&
+          attempt < 4) {
+        id_.icntl[13] = std::max(2 * id_.icntl[13], 50);
+        continue;
+      }
+      break;
+    }
+    if (id_.infog[0] == -10) {
+      throw SingularMatrixError("MUMPS", -1);
+    }
+    check("factorisation");
+    if (options_.stopIfSingular && id_.infog[27] > 0) { // INFOG(28): null pivots found
+      throw SingularMatrixError("MUMPS", id_.pivnul_list != nullptr ? id_.pivnul_list[0] - 1 : -1);
+    }
+  }
+
+  void solve(Eigen::Ref<Eigen::MatrixXd> rhs) override {
+    if (rhs.rows() != id_.n) {
+      throw LinearSolverError("MUMPS: right-hand side size differs from the matrix size");
+    }
+    Eigen::MatrixXd b = rhs; // contiguous column-major copy
+    id_.rhs = b.data();
+    id_.nrhs = static_cast<int>(b.cols());
+    id_.lrhs = id_.n;
+    id_.job = jobSolve;
+    dmumps_c(&id_);
+    check("solution");
+    rhs = b;
+  }
+
+private:
+  void check(const char* phase) const {
+    if (id_.infog[0] < 0) {
+      throw LinearSolverError(std::string("MUMPS: ") + phase +
+                              " failed (INFOG(1) = " + std::to_string(id_.infog[0]) +
+                              ", INFOG(2) = " + std::to_string(id_.infog[1]) + ")");
+    }
+  }
+
+  SolverOptions options_;
+  DMUMPS_STRUC_C id_;
+  bool initialised_ = false;
+  std::vector<MUMPS_INT> irn_, jcn_;
+};
+
+} // namespace
+
+std::unique_ptr<LinearSolver> makeMumps(const SolverOptions& o, MatrixKind k) {
+  return std::make_unique<MumpsSolver>(o, k);
+}
+
+} // namespace stella::linalg::detail
