@@ -86,10 +86,10 @@ private:
 
 } // namespace stella
 
-#define STELLA_ASSERT(cond, msg)                                                                   \
-  do {                                                                                             \
-    if (!(cond)) {                                                                                 \
-      throw ::stella::InternalError(std::string("assertion '" #cond "' failed: ") + (msg),         \
-                                    __FILE__, __LINE__);                                           \
-    }                                                                                              \
+#define STELLA_ASSERT(cond, msg)                                                                             \
+  do {                                                                                                       \
+    if (!(cond)) {                                                                                           \
+      throw ::stella::InternalError(std::string("assertion '" #cond "' failed: ") + (msg), __FILE__,         \
+                                    __LINE__);                                                               \
+    }                                                                                                        \
   } while (false)

@@ -6,6 +6,7 @@
 #include "Diagnostics.hpp"
 #include "Value.hpp"
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -16,7 +17,10 @@
 namespace stella {
 
 struct InterpreterOptions {
-  long whileIterationCap = 10'000'000; // a `while` that runs longer stops with an error
+  long whileIterationCap = 10'000'000;         // a `while` that runs longer stops with an error
+  long long stepBudget = 0;                    // statements + loop iterations allowed (0: unlimited; fuzzing)
+  std::int64_t maxSequenceLength = 10'000'000; // a longer list/tuple is refused (LANG_SIZE)
+  std::int64_t maxStringLength = 100'000'000;  // a longer string is refused (LANG_SIZE)
 };
 
 // How a run of a command file ended.
@@ -60,7 +64,8 @@ bool checkSyntax(const std::shared_ptr<const SourceFile>& file, DiagnosticSink& 
 // Developer views (`stella check --dump-tokens / --dump-ast`, `stella fmt`).
 std::string dumpTokens(const std::shared_ptr<const SourceFile>& file);
 std::string dumpAst(const std::shared_ptr<const SourceFile>& file);
-// Pretty-prints a command file; the output re-parses to the same AST.
+// Pretty-prints a command file, keeping its comments; the output re-parses to the same AST.
+// Throws UserError (all syntax errors) when the file does not parse.
 std::string formatSource(const std::shared_ptr<const SourceFile>& file);
 
 // An expression compiled once and evaluated many times: FORMULE bodies, catalogue block

@@ -1,0 +1,137 @@
+// Interpreter: parses a command file, runs it statement by statement through the Evaluator,
+// and reports every user error to the DiagnosticSink (never throws them).
+#include "Interpreter.hpp"
+
+#include "Evaluator.hpp"
+#include "Parser.hpp"
+
+#include <new>
+
+namespace stella {
+
+struct Interpreter::Impl {
+  Impl(CommandHandler& h, DiagnosticSink& s, const InterpreterOptions& o)
+      : handler(h), sink(s), evaluator(&h, &s, toEvaluatorOptions(o)) {}
+
+  static EvaluatorOptions toEvaluatorOptions(const InterpreterOptions& o) {
+    EvaluatorOptions e;
+    e.whileIterationCap = o.whileIterationCap;
+    e.stepBudget = o.stepBudget;
+    e.limits.maxSequenceLength = o.maxSequenceLength;
+    e.limits.maxStringLength = o.maxStringLength;
+    return e;
+  }
+
+  CommandHandler& handler;
+  DiagnosticSink& sink;
+  Evaluator evaluator;
+  std::vector<std::shared_ptr<const Module>> modules; // kept alive: functions refer to them
+};
+
+Interpreter::Interpreter(CommandHandler& handler, DiagnosticSink& sink, InterpreterOptions options)
+    : impl_(std::make_unique<Impl>(handler, sink, options)) {}
+
+Interpreter::~Interpreter() = default;
+
+void Interpreter::defineCommand(const std::string& name) {
+  impl_->evaluator.defineCommand(name);
+}
+
+void Interpreter::defineGlobal(const std::string& name, Value value) {
+  impl_->evaluator.globals()[name] = std::move(value);
+}
+
+void Interpreter::defineNative(const std::string& name, NativeFunction fn) {
+  impl_->evaluator.globals()[name] = makeNativeFunction(name, std::move(fn));
+}
+
+std::optional<Value> Interpreter::global(const std::string& name) const {
+  auto& globals = impl_->evaluator.globals();
+  auto it = globals.find(name);
+  if (it == globals.end()) {
+    return std::nullopt;
+  }
+  return it->second;
+}
+
+namespace {
+
+bool isFinCall(const Stmt& s) {
+  if (s.kind != StmtKind::Expr || s.exprs.empty()) {
+    return false;
+  }
+  const Expr& e = *s.exprs[0];
+  return e.kind == ExprKind::Call && e.items[0]->kind == ExprKind::Name && e.items[0]->text == "FIN";
+}
+
+// True when every syntax error lies after a top-level `FIN()`: the text after FIN is ignored.
+bool errorsOnlyAfterFin(const ParseResult& r) {
+  int finLine = 0;
+  for (const auto& s : r.module->body) {
+    if (isFinCall(*s)) {
+      finLine = std::max(s->endLine, s->pos.line);
+      break;
+    }
+  }
+  if (finLine == 0) {
+    return false;
+  }
+  for (const auto& d : r.errors) {
+    if (d.location.line <= finLine) {
+      return false;
+    }
+  }
+  return true;
+}
+
+Diagnostic abortDiagnostic(const std::string& message) {
+  Diagnostic d = Diagnostic::fatal("INTERNAL", message);
+  d.kind = FailureKind::Abort;
+  d.withNote("this is a bug in stella, not in the command file; please report it with the command file");
+  return d;
+}
+
+SourceLocation endOfFile(const std::shared_ptr<const SourceFile>& file) {
+  int line = std::max(1, file->lineCount());
+  return SourceLocation{file, line, static_cast<int>(file->line(line).size()) + 1, 1};
+}
+
+} // namespace
+
+RunStatus Interpreter::run(const std::shared_ptr<const SourceFile>& file) {
+  ParseResult parsed = parseFile(file);
+  if (!parsed.errors.empty() && !errorsOnlyAfterFin(parsed)) {
+    for (const auto& d : parsed.errors) {
+      impl_->sink.report(d);
+    }
+    return RunStatus::SyntaxError;
+  }
+  impl_->modules.push_back(parsed.module);
+  try {
+    impl_->evaluator.execModule(parsed.module);
+  } catch (const FinishSignal&) {
+    return RunStatus::Finished;
+  } catch (const UserError& e) {
+    for (const auto& d : e.diagnostics()) {
+      impl_->sink.report(d);
+    }
+    return RunStatus::Failed;
+  } catch (const InternalError& e) {
+    impl_->sink.report(abortDiagnostic(e.what()));
+    return RunStatus::Failed;
+  } catch (const std::bad_alloc&) {
+    impl_->sink.report(Diagnostic::fatal("LANG_MEMORY", "out of memory while running the command file"));
+    return RunStatus::Failed;
+  } catch (const std::exception& e) {
+    impl_->sink.report(abortDiagnostic(std::string("unexpected failure: ") + e.what()));
+    return RunStatus::Failed;
+  }
+  if (impl_->handler.finished()) {
+    return RunStatus::Finished;
+  }
+  impl_->sink.report(Diagnostic::alarm("LANG_FIN", "the command file ends without FIN()", endOfFile(file))
+                         .withNote("end a study with FIN() so that its results are closed properly"));
+  return RunStatus::Completed;
+}
+
+} // namespace stella
