@@ -127,6 +127,9 @@ CompiledExpression::Lookup levelLookup(const std::map<std::string, Value>& value
     if (types.known(name)) {
       return Value(name);
     }
+    if (std::any_of(name.begin(), name.end(), [](char c) { return c >= 'a' && c <= 'z'; })) {
+      return std::nullopt; // not a keyword: the expression's built-ins (abs, len, sqrt...)
+    }
     return Value(); // a keyword of this level that is absent
   };
 }
@@ -464,7 +467,7 @@ private:
     std::vector<std::pair<std::size_t, std::string>> near;
     for (const auto& n : names) {
       std::size_t d = editDistance(n, k.name);
-      if (d <= std::max<std::size_t>(2, k.name.size() / 3)) {
+      if (d <= std::max<std::size_t>(2, k.name.size() / 4)) {
         near.emplace_back(d, n);
       }
     }
