@@ -963,6 +963,9 @@ Value Evaluator::callNative(const NativeCallable& fn, const CallArguments& args,
       if (!d.location.known()) {
         d.location = location(at);
         changed = true;
+      } else if (d.location.file != file_ || d.location.line != at.line) {
+        d.withNote("while evaluating the call of " + fn.name() + " at " + location(at).str());
+        changed = true;
       }
     }
     if (!changed) {

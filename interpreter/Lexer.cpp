@@ -452,8 +452,10 @@ Token Lexer::nextToken() {
       if (!expressionMode_ && !brackets_.empty() && looksLikeNewStatement() && bracketNeverCloses(at_)) {
         // `C = [1, 2` then `D = 4` at column 1: the bracket was never closed; report it and read on
         const Bracket& b = brackets_.front();
-        error("SYNTAX_8", std::string("'") + b.open + "' was never closed", b.pos,
-              "add the matching closing bracket before line " + std::to_string(line_));
+        if (unterminatedStringLine_ != line_ - 1) { // else the unterminated string explains it
+          error("SYNTAX_8", std::string("'") + b.open + "' was never closed", b.pos,
+                "add the matching closing bracket before line " + std::to_string(line_));
+        }
         brackets_.clear();
         atLogicalLineStart_ = true;
         lineHasTokens_ = false;
@@ -662,6 +664,7 @@ Token Lexer::lexString(std::size_t prefixLength, bool raw, bool fString) {
   t.contentColumn = contentColumn;
   t.pos = startPos;
   if (contentEnd == std::string_view::npos) {
+    unterminatedStringLine_ = line_;
     error("SYNTAX_2", triple ? "unterminated triple-quoted string" : "unterminated string", startPos,
           triple ? "close it with three quotes of the same kind"
                  : "close the string with the same quote on the same line, or use triple quotes for several "

@@ -76,7 +76,8 @@ private:
   Pos indentPos_;
   std::vector<Comment>* comments_ = nullptr;
   TokenKind lastKind_ = TokenKind::Newline; // last significant token returned
-  std::size_t knownCloseAt_ = 0;            // the open brackets are known to close at this offset
+  std::size_t knownCloseAt_ = 0;
+  int unterminatedStringLine_ = 0; // the open brackets are known to close at this offset
 };
 
 } // namespace stella

@@ -183,6 +183,7 @@ void Parser::parseStatement(std::vector<StmtPtr>& out) {
   bool compound = at(TokenKind::KwIf) || at(TokenKind::KwFor) || at(TokenKind::KwWhile) ||
                   at(TokenKind::KwDef) || at(TokenKind::KwElif) || at(TokenKind::KwElse) ||
                   at(TokenKind::KwTry) || at(TokenKind::KwClass) || at(TokenKind::KwWith);
+  bool refusedTry = at(TokenKind::KwTry);
   try {
     if (at(TokenKind::Indent)) {
       report(cur_.pos, "unexpected indent", "SYNTAX_6",
@@ -221,6 +222,13 @@ void Parser::parseStatement(std::vector<StmtPtr>& out) {
     synchronize();
     if (compound && at(TokenKind::Indent)) {
       skipBlock(); // the block of a header in error: its errors would be consequences
+    }
+    // a refused `try` takes its except/else/finally clauses with it
+    while (refusedTry && (at(TokenKind::KwExcept) || at(TokenKind::KwFinally) || at(TokenKind::KwElse))) {
+      synchronize();
+      if (at(TokenKind::Indent)) {
+        skipBlock();
+      }
     }
   }
 }

@@ -60,8 +60,17 @@ Expectations readExpectations(const SourceFile& file) {
         f(rest);
       }
     };
-    take("expect-error", [&](const std::string& r) { e.errors.push_back({l, trim(r)}); });
-    take("expect-alarm", [&](const std::string& r) { e.alarms.push_back({l, trim(r)}); });
+    auto ids = [&](std::vector<Expected>& into) {
+      return [&into, l](const std::string& r) {
+        std::istringstream list(r);
+        std::string id;
+        while (std::getline(list, id, ',')) {
+          into.push_back({l, trim(id)});
+        }
+      };
+    };
+    take("expect-error", ids(e.errors));
+    take("expect-alarm", ids(e.alarms));
     take("expect-output", [&](const std::string& r) {
       std::string text = r;
       while (!text.empty() && text.back() == '\r') {
