@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <tuple>
 
 namespace stella {
 
@@ -209,6 +210,10 @@ public:
       out.resultType = resultType(out.keywords);
     }
     if (!errors_.empty()) {
+      // In reading order (a missing keyword is located at its _F, before the keywords inside).
+      std::stable_sort(errors_.begin(), errors_.end(), [](const Diagnostic& a, const Diagnostic& b) {
+        return std::tie(a.location.line, a.location.column) < std::tie(b.location.line, b.location.column);
+      });
       throw UserError(std::move(errors_));
     }
     return out;
@@ -231,10 +236,14 @@ private:
   void checkReuse(const KeywordArgument* reuse, ValidatedCall& out, const SourceLocation& call) {
     if (reuse == nullptr) {
       if (command_.reentrant == 'o') {
+        std::string target = "the concept it modifies";
+        if (const SimpleKeyword* k = out.keywords.simple(command_.reuseKeyword);
+            k != nullptr && !k->values.empty() && k->values.front().isConcept()) {
+          target = k->values.front().asConcept()->name;
+        }
         error("CATALOG_11",
-              command_.name + " modifies its argument in place: write reuse=" +
-                  (command_.reuseKeyword.empty() ? "the concept"
-                                                 : "the concept given to " + command_.reuseKeyword),
+              command_.name + " modifies " + target + " in place: write " + target + " = " + command_.name +
+                  "(reuse=" + target + ", ...)",
               call);
       }
       return;
@@ -611,10 +620,22 @@ private:
                                           [&](const Value& allowed) { return allowed.equals(*converted); })) {
         std::vector<std::string> near;
         if (converted->isString()) {
+          std::size_t best = 3; // suggest only the closest allowed values, at most 2 edits away
+          std::string names;
           for (const auto& a : s.into) {
-            if (a.isString() && editDistance(a.asString(), converted->asString()) <= 2) {
-              near.push_back("did you mean " + a.repr() + "?");
+            if (!a.isString()) {
+              continue;
             }
+            std::size_t d = editDistance(a.asString(), converted->asString());
+            if (d < best) {
+              best = d;
+              names = a.repr();
+            } else if (d == best) {
+              names += " or " + a.repr();
+            }
+          }
+          if (!names.empty()) {
+            near.push_back("did you mean " + names + "?");
           }
         }
         error("CATALOG_3",

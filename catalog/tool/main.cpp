@@ -1,15 +1,74 @@
 // stella-catalog: developer tool for the keyword catalogue, usable before and besides the
 // `stella` executable: `check` (load-time checks), `describe NAME`, `json`, `docs DIR`
-// (regenerate doc/catalog), `coverage FILE.comm...` (keywords and values no file uses).
+// (regenerate doc/catalog), `validate FILE.comm...` (check every call of command files against
+// the catalogue, without running operators), `coverage FILE.comm...` (keywords and values no
+// file uses).
 #include "catalog/Catalog.hpp"
+
+#include "interpreter/Interpreter.hpp"
 
 #include <iostream>
 
 namespace {
 
+// Validates every command call of a file against the catalogue without running operators.
+class ValidatingHandler : public stella::CommandHandler {
+public:
+  stella::Value callCommand(const std::string& command, const stella::CallArguments& args,
+                            const std::string& target) override {
+    stella::ValidatedCall v = stella::Catalog::builtin().validate(command, args);
+    finished_ = finished_ || command == "FIN";
+    if (v.reused) {
+      return stella::Value(v.reused);
+    }
+    if (v.resultType.empty()) {
+      return stella::Value();
+    }
+    auto c = std::make_shared<stella::Concept>();
+    c->name = target;
+    c->type = v.resultType;
+    return stella::Value(c);
+  }
+  stella::Value conceptAttribute(const std::shared_ptr<stella::Concept>& c, const std::string& name,
+                                 const stella::SourceLocation& at) override {
+    throw stella::UserError(stella::Diagnostic::fatal(
+        "CATALOG_CHECK", "validation does not compute " + c->name + "." + name, at));
+  }
+  bool finished() const override { return finished_; }
+
+private:
+  bool finished_ = false;
+};
+
+class PrintingSink : public stella::DiagnosticSink {
+public:
+  int errors = 0;
+  void report(const stella::Diagnostic& d) override {
+    errors += d.severity == stella::Severity::Fatal ? 1 : 0;
+    std::cerr << stella::formatDiagnostic(d) << "\n";
+  }
+};
+
+int validateFiles(const std::vector<std::string>& files) {
+  int failed = 0;
+  for (const auto& f : files) {
+    ValidatingHandler handler;
+    PrintingSink sink;
+    stella::Interpreter interp(handler, sink);
+    for (const auto& name : stella::Catalog::builtin().commandNames()) {
+      interp.defineCommand(name);
+    }
+    stella::RunStatus status = interp.run(stella::SourceFile::load(f));
+    bool ok = status == stella::RunStatus::Completed || status == stella::RunStatus::Finished;
+    std::cout << f << ": " << (ok ? "valid" : "INVALID") << "\n";
+    failed += ok ? 0 : 1;
+  }
+  return failed == 0 ? 0 : 1;
+}
+
 int usage() {
-  std::cerr
-      << "usage: stella-catalog check | list | describe NAME | json | docs DIR | coverage FILE.comm...\n";
+  std::cerr << "usage: stella-catalog check | list | describe NAME | json | docs DIR | validate FILE.comm... "
+               "| coverage FILE.comm...\n";
   return 2;
 }
 
@@ -41,6 +100,9 @@ int run(const std::vector<std::string>& args) {
   if (what == "docs" && args.size() == 2) {
     stella::writeCatalogDocs(args[1]);
     return 0;
+  }
+  if (what == "validate" && args.size() > 1) {
+    return validateFiles(std::vector<std::string>(args.begin() + 1, args.end()));
   }
   if (what == "coverage") {
     std::vector<std::filesystem::path> files(args.begin() + 1, args.end());
