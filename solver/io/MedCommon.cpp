@@ -4,7 +4,11 @@
 
 #include "solver/io/MeshFileError.hpp"
 
+#include <fcntl.h>
 #include <hdf5.h>
+#include <unistd.h>
+
+#include <cstdio>
 
 #include <algorithm>
 #include <array>
@@ -90,6 +94,26 @@ const std::vector<CellType>& medCellOrder() {
     return out;
   }();
   return order;
+}
+
+StderrSilencer::StderrSilencer() {
+  std::fflush(stderr);
+  saved_ = ::dup(2);
+  const int null = ::open("/dev/null", O_WRONLY);
+  if (saved_ >= 0 && null >= 0) {
+    ::dup2(null, 2);
+  }
+  if (null >= 0) {
+    ::close(null);
+  }
+}
+
+StderrSilencer::~StderrSilencer() {
+  std::fflush(stderr);
+  if (saved_ >= 0) {
+    ::dup2(saved_, 2);
+    ::close(saved_);
+  }
 }
 
 void silenceHdf5Errors() {

@@ -49,6 +49,19 @@ private:
   med_idt fid_ = -1;
 };
 
+// While alive, the process's standard error goes to /dev/null: the MED library prints its own
+// diagnostics to stderr on failures; stella reports them as MESHFILE_4 instead.
+class StderrSilencer {
+public:
+  StderrSilencer();
+  ~StderrSilencer();
+  StderrSilencer(const StderrSilencer&) = delete;
+  StderrSilencer& operator=(const StderrSilencer&) = delete;
+
+private:
+  int saved_ = -1;
+};
+
 // Silences HDF5's automatic error printing (once per process).
 void silenceHdf5Errors();
 

@@ -135,6 +135,7 @@ void addToGroups(const std::map<med_int, std::vector<std::string>>& families, me
 } // namespace
 
 std::vector<std::string> medMeshNames(const std::filesystem::path& file) {
+  const StderrSilencer quiet;
   const MedFile f(file, MedFile::Mode::Read);
   std::vector<std::string> names;
   for (const auto& h : readHeaders(f)) {
@@ -143,7 +144,38 @@ std::vector<std::string> medMeshNames(const std::filesystem::path& file) {
   return names;
 }
 
+namespace {
+
+// The file cannot hold more than its size in values: counts beyond that come from a damaged
+// header and must not drive allocations.
+void checkPlausible(const MedFile& f, std::uint64_t values, std::size_t bytesEach, const std::string& what) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(f.path(), ec);
+  if (!ec && values * bytesEach > 4 * size + (1u << 20)) {
+    throwFileError("MESHFILE_3", f.path(),
+                   what + ": the file claims " + std::to_string(values) +
+                       " values, more than it can hold (damaged file?)");
+  }
+}
+
+Mesh readMedMeshUnguarded(const std::filesystem::path& file, const std::string& meshName);
+
+} // namespace
+
 Mesh readMedMesh(const std::filesystem::path& file, const std::string& meshName) {
+  const StderrSilencer quiet;
+  try {
+    return readMedMeshUnguarded(file, meshName);
+  } catch (const std::bad_alloc&) {
+    throwFileError("MESHFILE_3", file, "sizes in the file are too large to be real (damaged file?)");
+  } catch (const std::length_error&) {
+    throwFileError("MESHFILE_3", file, "sizes in the file are too large to be real (damaged file?)");
+  }
+}
+
+namespace {
+
+Mesh readMedMeshUnguarded(const std::filesystem::path& file, const std::string& meshName) {
   const MedFile f(file, MedFile::Mode::Read);
   const auto headers = readHeaders(f);
   if (headers.empty()) {
@@ -181,6 +213,7 @@ Mesh readMedMesh(const std::filesystem::path& file, const std::string& meshName)
     throwFileError("MESHFILE_3", file, "mesh '" + name + "' has no nodes");
   }
   const auto sd = static_cast<std::size_t>(header->spaceDim);
+  checkPlausible(f, static_cast<std::uint64_t>(nnodes) * sd, sizeof(med_float), "coordinates");
   std::vector<med_float> coords(static_cast<std::size_t>(nnodes) * sd);
   f.check(
       MEDmeshNodeCoordinateRd(f.id(), name.c_str(), MED_NO_DT, MED_NO_IT, MED_FULL_INTERLACE, coords.data()),
@@ -218,6 +251,8 @@ Mesh readMedMesh(const std::filesystem::path& file, const std::string& meshName)
     }
     knownCells += n;
     const auto nn = static_cast<std::size_t>(nodeCount(t));
+    checkPlausible(f, static_cast<std::uint64_t>(n) * nn, sizeof(med_int),
+                   std::string(stella::name(t)) + " cells");
     std::vector<med_int> conn(static_cast<std::size_t>(n) * nn);
     f.check(MEDmeshElementConnectivityRd(f.id(), name.c_str(), MED_NO_DT, MED_NO_IT, MED_CELL, geo, MED_NODAL,
                                          MED_FULL_INTERLACE, conn.data()),
@@ -253,6 +288,12 @@ Mesh readMedMesh(const std::filesystem::path& file, const std::string& meshName)
     f.check(MEDmeshEntityInfo(f.id(), name.c_str(), MED_NO_DT, MED_NO_IT, MED_CELL, static_cast<int>(i),
                               geoName, &geo),
             "MEDmeshEntityInfo", "cell types of mesh " + name);
+    if (const auto t = cellTypeFromMed(geo);
+        t && entityCount(f, name, MED_CELL, geo, MED_CONNECTIVITY) <= 0) {
+      throwFileError("MESHFILE_3", file,
+                     "mesh '" + name + "' lists " + std::string(stella::name(*t)) +
+                         " cells without connectivity");
+    }
     if (!cellTypeFromMed(geo)) {
       throwFileError("MESHFILE_5", file,
                      "mesh '" + name + "' has cells of MED type " + medName(geoName, MED_NAME_SIZE) + " (" +
@@ -270,5 +311,7 @@ Mesh readMedMesh(const std::filesystem::path& file, const std::string& meshName)
   }
   return mesh;
 }
+
+} // namespace
 
 } // namespace stella
