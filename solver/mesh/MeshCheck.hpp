@@ -1,0 +1,33 @@
+#pragma once
+// VERI_MAIL checks of LIRE_MAILLAGE: duplicate nodes (same position), degenerate cells (a node
+// repeated or an edge of zero length), inverted cells (a negative corner jacobian: volume cells,
+// and faces of a 2D mesh turning clockwise), flat cells (APLAT: measure / longest edge^dim below
+// the threshold). Reported as alarms naming the nodes and cells:
+//   MESHCHECK_1 duplicate nodes, MESHCHECK_2 degenerate cells, MESHCHECK_3 inverted cells,
+//   MESHCHECK_4 flat cells.
+
+#include "interpreter/Diagnostics.hpp"
+#include "solver/mesh/Mesh.hpp"
+
+#include <utility>
+#include <vector>
+
+namespace stella {
+
+struct MeshCheckReport {
+  std::vector<std::pair<NodeId, NodeId>> duplicateNodes;
+  std::vector<CellId> degenerateCells;
+  std::vector<CellId> invertedCells;
+  std::vector<CellId> flatCells;
+  bool clean() const {
+    return duplicateNodes.empty() && degenerateCells.empty() && invertedCells.empty() && flatCells.empty();
+  }
+};
+
+// `flatness` is VERI_MAIL/APLAT (code_aster default 1e-3). Nodes closer than 1e-10 times the
+// bounding-box diagonal count as duplicates.
+MeshCheckReport checkMesh(const Mesh& mesh, double flatness = 1e-3);
+// One alarm per kind of problem found, naming up to 20 entities each.
+std::vector<Diagnostic> meshCheckDiagnostics(const Mesh& mesh, const MeshCheckReport& report);
+
+} // namespace stella
