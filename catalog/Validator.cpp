@@ -357,8 +357,16 @@ private:
     return active;
   }
 
-  KeywordTree validateLevel(const Level& level, const std::vector<KeywordArgument>& keywords,
+  KeywordTree validateLevel(const Level& level, const std::vector<KeywordArgument>& written,
                             const SourceLocation& at, const std::string& where) {
+    // As in code_aster, a keyword given the value None is absent (command files build
+    // arguments programmatically: `INST=None`).
+    std::vector<KeywordArgument> keywords;
+    for (const KeywordArgument& k : written) {
+      if (k.value && !k.value->isNone()) {
+        keywords.push_back(k);
+      }
+    }
     KeywordTree tree;
     tree.setLocation(at);
     std::map<std::string, Value> given;

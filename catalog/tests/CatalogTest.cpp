@@ -423,6 +423,15 @@ TEST(Generations, EchecSubKeywordsOf2020) {
   EXPECT_FALSE(d->last().keywords.has("ADAPTATION")); // only with METHODE='AUTO'
 }
 
+TEST(Commands, NoneMeansAbsent) {
+  auto r = run("RES = STAT_NON_LINE(MODELE=MO, CHAM_MATER=MAT, CARA_ELEM=None, EXCIT=_F(CHARGE=LOAD, "
+               "FONC_MULT=None),\n"
+               "                    INCREMENT=_F(LIST_INST=TIMES, INST_FIN=None))\n");
+  ASSERT_TRUE(valid(*r));
+  EXPECT_FALSE(r->last().keywords.has("CARA_ELEM"));
+  EXPECT_FALSE(r->last().keywords.occurrences("INCREMENT")[0].has("INST_FIN"));
+}
+
 TEST(Generations, NoeudKeywordsOf2020) {
   auto r = run("L2 = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(NOEUD=('N1', 'N2'), DX=0.0), "
                "FORCE_NODALE=_F(NOEUD='N3', FY=-1.0))\n");
@@ -520,7 +529,8 @@ TEST(Commands, InvalidTable) {
       {"L2 = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_NO='A', DX='0'))", {"CATALOG_2"}},
       {"L2 = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_NO='A'))", {"CATALOG_6"}},
       {"L2 = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_NO='A', UI2=0.0))", {"CATALOG_SCOPE", "CATALOG_6"}},
-      {"L2 = AFFE_CHAR_CINE(MODELE=MO, MECA_IMPO=_F(GROUP_NO='A', LAGS_C=0.0))", {"CATALOG_SCOPE", "CATALOG_6"}},
+      {"L2 = AFFE_CHAR_CINE(MODELE=MO, MECA_IMPO=_F(GROUP_NO='A', LAGS_C=0.0))",
+       {"CATALOG_SCOPE", "CATALOG_6"}},
       {"L2 = AFFE_CHAR_MECA(MODELE=MO)", {"CATALOG_6"}},
       {"TEST_RESU(RESU=_F(RESULTAT=RAMPE, INST=1.0, NOM_CHAM='DEPL', NOM_CMP='DX', VALE_CALC=1.0))",
        {"CATALOG_7"}},
