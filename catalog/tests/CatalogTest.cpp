@@ -557,6 +557,22 @@ TEST(Commands, ErrorsAreLocatedAtTheKeyword) {
   EXPECT_EQ(d.location.column, 13);
 }
 
+// Complete studies written as users write them (2025 and 2020 spellings) validate end to end.
+TEST(Studies, CompleteCommandFilesValidate) {
+  for (const char* name : {"lac_patch.comm", "indentation_2020.comm"}) {
+    Sink sink;
+    ValidatingHandler handler;
+    Interpreter interp(handler, sink);
+    for (const auto& command : Catalog::builtin().commandNames()) {
+      interp.defineCommand(command);
+    }
+    RunStatus status =
+        interp.run(SourceFile::load(std::string(STELLA_SOURCE_DIR) + "/catalog/tests/data/" + name));
+    EXPECT_EQ(status, RunStatus::Finished) << name << "\n" << sink.text();
+    EXPECT_GT(handler.calls.size(), 20u) << name;
+  }
+}
+
 TEST(Catalog, DescribeAndJson) {
   const Catalog& c = Catalog::builtin();
   std::string tree = c.describe("DEFI_CONTACT");
