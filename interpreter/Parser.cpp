@@ -894,7 +894,6 @@ ExprPtr Parser::parsePrimary() {
 // arglist: argument (',' argument)* [',']
 // argument: test [comp_for] | NAME '=' test | '*' test | '**' test
 ExprPtr Parser::parseCall(ExprPtr callee) {
-  Nest nest(*this);
   Pos open = cur_.pos;
   advance();
   ExprPtr call = node(ExprKind::Call, callee->pos);
@@ -960,7 +959,6 @@ ExprPtr Parser::parseCall(ExprPtr callee) {
 
 // subscript: test | [test] ':' [test] [':' [test]]   (several, separated by ',', make a tuple)
 ExprPtr Parser::parseSubscript(ExprPtr value) {
-  Nest nest(*this);
   Pos pos = cur_.pos;
   advance();
   ExprPtr e = node(ExprKind::Subscript, pos);
@@ -1060,7 +1058,6 @@ ExprPtr Parser::parseAtom() {
 
 // '(' [testlist_comp] ')'   testlist_comp: test (comp_for | (',' test)* [','])
 ExprPtr Parser::parseParenthesized(Pos open) {
-  Nest nest(*this);
   if (accept(TokenKind::RParen)) {
     return node(ExprKind::Tuple, open);
   }
@@ -1091,7 +1088,6 @@ ExprPtr Parser::parseParenthesized(Pos open) {
 
 // '[' [test (comp_for | (',' test)* [','])] ']'
 ExprPtr Parser::parseListDisplay(Pos open) {
-  Nest nest(*this);
   ExprPtr list = node(ExprKind::List, open);
   if (accept(TokenKind::RBracket)) {
     return list;
@@ -1119,7 +1115,6 @@ ExprPtr Parser::parseListDisplay(Pos open) {
 
 // '{' [(test ':' test | '**' expr) (',' ...)* [',']] '}'
 ExprPtr Parser::parseDictDisplay(Pos open) {
-  Nest nest(*this);
   ExprPtr dict = node(ExprKind::Dict, open);
   while (!at(TokenKind::RBrace)) {
     if (accept(TokenKind::DoubleStar)) {

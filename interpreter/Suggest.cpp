@@ -7,29 +7,35 @@
 namespace stella {
 
 int editDistance(const std::string& a, const std::string& b, int limit) {
+  // optimal string alignment: insertions, deletions, substitutions and adjacent transpositions
   if (std::abs(static_cast<int>(a.size()) - static_cast<int>(b.size())) > limit) {
     return limit + 1;
   }
-  std::vector<int> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) {
-    row[j] = static_cast<int>(j);
+  std::size_t n = b.size();
+  std::vector<int> before(n + 1);
+  std::vector<int> previous(n + 1);
+  std::vector<int> row(n + 1);
+  for (std::size_t j = 0; j <= n; ++j) {
+    previous[j] = static_cast<int>(j);
   }
   for (std::size_t i = 1; i <= a.size(); ++i) {
-    int diagonal = row[0];
     row[0] = static_cast<int>(i);
     int best = row[0];
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      int above = row[j];
+    for (std::size_t j = 1; j <= n; ++j) {
       int cost = a[i - 1] == b[j - 1] ? 0 : 1;
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + cost});
-      diagonal = above;
+      row[j] = std::min({previous[j] + 1, row[j - 1] + 1, previous[j - 1] + cost});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) {
+        row[j] = std::min(row[j], before[j - 2] + 1);
+      }
       best = std::min(best, row[j]);
     }
     if (best > limit) {
       return limit + 1;
     }
+    before.swap(previous);
+    previous.swap(row);
   }
-  return row[b.size()];
+  return previous[n];
 }
 
 namespace {
