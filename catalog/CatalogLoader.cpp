@@ -520,6 +520,7 @@ struct Checker {
     outOfScope.insert(level.outOfScope.begin(), level.outOfScope.end());
     allNames(level, names);
     checkRules(path, level, names);
+    checkShadowing(path, level);
     for (const Entry& e : level.entries) {
       std::string p = path + "/" + e.name;
       if (e.simple) {
@@ -531,6 +532,28 @@ struct Checker {
         checkLevel(p, e.factor->body, {});
       } else if (e.block) {
         checkLevel(path, e.block->body, names);
+      }
+    }
+  }
+
+  // A keyword defined unconditionally at a level and again inside one of its blocks: the block's
+  // definition could never be used (the first active definition wins).
+  void checkShadowing(const std::string& path, const Level& level) {
+    std::set<std::string> direct;
+    for (const Entry& e : level.entries) {
+      if (!e.block) {
+        direct.insert(e.name);
+      }
+    }
+    for (const Entry& e : level.entries) {
+      if (e.block) {
+        std::set<std::string> inBlock;
+        allNames(e.block->body, inBlock);
+        for (const auto& n : inBlock) {
+          if (direct.count(n)) {
+            problem(path + "/" + n, "defined both unconditionally and in block " + e.name);
+          }
+        }
       }
     }
   }

@@ -223,6 +223,7 @@ private:
   const CommandSpec& command_;
   const ConceptTypes& types_;
   std::vector<Diagnostic> errors_;
+  std::vector<std::vector<std::pair<const FactorSpec*, std::string>>> variants_; // per factor being validated
 
   void error(const std::string& id, std::string message, const SourceLocation& at,
              std::vector<std::string> notes = {}) {
@@ -424,7 +425,13 @@ private:
         if (g != givenArgs.end()) {
           present.push_back(e->name);
           noteRename(e->name, stored, g->second->location);
+          // The other definitions of this factor keyword in exclusive blocks of this level, to
+          // tell a user which variant a misplaced keyword belongs to.
+          std::vector<std::pair<const FactorSpec*, std::string>> variants;
+          collectVariants(level, e->name, &f, "", variants);
+          variants_.push_back(std::move(variants));
           auto occurrences = checkFactor(e->name, f, *g->second, where);
+          variants_.pop_back();
           tree.addFactor(FactorKeyword{stored, std::move(occurrences), g->second->location, false});
         } else if (f.presence == Presence::Defaulted) {
           present.push_back(e->name);
@@ -451,6 +458,20 @@ private:
     }
     checkRules(active, present, at, where);
     return tree;
+  }
+
+  static void collectVariants(const Level& level, const std::string& name, const FactorSpec* self,
+                              const std::string& condition,
+                              std::vector<std::pair<const FactorSpec*, std::string>>& out) {
+    for (const Entry& e : level.entries) {
+      if (e.block) {
+        std::string c =
+            condition.empty() ? e.block->conditionText : condition + " and " + e.block->conditionText;
+        collectVariants(e.block->body, name, self, c, out);
+      } else if (e.factor && e.name == name && e.factor.get() != self) {
+        out.emplace_back(e.factor.get(), condition.empty() ? "(always)" : condition);
+      }
+    }
   }
 
   void reportNotAllowed(const Level& level, const ActiveSet& active, const KeywordArgument& k,
@@ -500,6 +521,18 @@ private:
     std::vector<std::string> allowed;
     for (const Entry* e : active.order) {
       allowed.push_back(e->name);
+    }
+    if (!variants_.empty()) {
+      for (const auto& [variant, condition] : variants_.back()) {
+        std::vector<std::pair<std::string, std::string>> inVariant;
+        collectAll(variant->body, "", inVariant);
+        bool found =
+            std::any_of(inVariant.begin(), inVariant.end(), [&](const auto& p) { return p.first == k.name; });
+        if (found) {
+          notes.push_back(k.name + " belongs to the variant of this factor keyword used when " + condition);
+          break;
+        }
+      }
     }
     notes.push_back("keywords allowed here: " + joinNames(allowed));
     error("CATALOG_1", "unknown keyword " + k.name + " in " + where, k.location, std::move(notes));

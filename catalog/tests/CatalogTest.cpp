@@ -135,7 +135,9 @@ TEST(BuiltinCatalog, BrokenCatalogueIsReportedWithFileAndKeyword) {
       Catalog::fromFiles({{"common/TYPES.cata", "TYPES(modele=())\n"},
                           {"CMD.cata", "CMD = OPER(result='modele', fr='x', regles=(UN_PARMI('A', 'B'),),\n"
                                        "  A=SIMP(statut='f', typ='TXM', defaut='X', into=('Y',), fr='a'),\n"
-                                       "  C=SIMP(statut='f', typ='R', defaut='OUI'))\n"}});
+                                       "  C=SIMP(statut='f', typ='R', defaut='OUI'),\n"
+                                       "  D=SIMP(statut='f', typ='I', fr='d'), b_x=BLOC(condition='True', "
+                                       "D=SIMP(statut='f', typ='R', fr='d')))\n"}});
   std::vector<std::string> p = c.problems();
   std::string all;
   for (const auto& s : p) {
@@ -147,6 +149,7 @@ TEST(BuiltinCatalog, BrokenCatalogueIsReportedWithFileAndKeyword) {
   EXPECT_NE(all.find("CMD/A: default 'X' is not one of the allowed values"), std::string::npos) << all;
   EXPECT_NE(all.find("CMD/C: no description"), std::string::npos) << all;
   EXPECT_NE(all.find("CMD/C: default 'OUI' does not match the keyword's type"), std::string::npos) << all;
+  EXPECT_NE(all.find("CMD/D: defined both unconditionally and in block b_x"), std::string::npos) << all;
 }
 
 TEST(DefiContact, DefaultsOfTheDiscreteFormulation) {
@@ -233,6 +236,10 @@ TEST(DefiContact, InvalidCallsNameTheProblem) {
   auto r =
       run("C = DEFI_CONTACT(MODELE=MO, ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B', COEF_CONT=100.))\n");
   EXPECT_EQ(r->sink.ids(), std::vector<std::string>{"CATALOG_1"}) << r->sink.text();
+  EXPECT_NE(r->sink.text().find("COEF_CONT belongs to the variant of this factor keyword used when "
+                                "equal_to('FORMULATION', 'CONTINUE') and equal_to('FROTTEMENT', 'COULOMB')"),
+            std::string::npos)
+      << r->sink.text();
   // E_N exists in the discrete ZONE, but only with ALGO_CONT='PENALISATION'.
   r = run("C = DEFI_CONTACT(MODELE=MO, ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B', E_N=100.))\n");
   EXPECT_EQ(r->sink.ids(), std::vector<std::string>{"CATALOG_14"}) << r->sink.text();
