@@ -6,10 +6,16 @@
 
 namespace stella {
 
-void KeywordTree::addSimple(SimpleKeyword k) { simples_.push_back(std::move(k)); }
-void KeywordTree::addFactor(FactorKeyword k) { factors_.push_back(std::move(k)); }
+void KeywordTree::addSimple(SimpleKeyword k) {
+  simples_.push_back(std::move(k));
+}
+void KeywordTree::addFactor(FactorKeyword k) {
+  factors_.push_back(std::move(k));
+}
 
-bool KeywordTree::has(const std::string& name) const { return simple(name) != nullptr || factor(name) != nullptr; }
+bool KeywordTree::has(const std::string& name) const {
+  return simple(name) != nullptr || factor(name) != nullptr;
+}
 
 const SimpleKeyword* KeywordTree::simple(const std::string& name) const {
   for (const auto& k : simples_) {
@@ -38,7 +44,9 @@ const SimpleKeyword& require(const KeywordTree& tree, const std::string& name) {
 }
 } // namespace
 
-const Value& KeywordTree::value(const std::string& name) const { return require(*this, name).values.front(); }
+const Value& KeywordTree::value(const std::string& name) const {
+  return require(*this, name).values.front();
+}
 
 std::string KeywordTree::text(const std::string& name) const {
   const Value& v = value(name);
