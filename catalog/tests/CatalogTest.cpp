@@ -130,6 +130,40 @@ TEST(BuiltinCatalog, LoadsCleanWithEveryDescription) {
   EXPECT_TRUE(c.problems().empty());
 }
 
+// Every keyword of every command carries a one-line description (also a load-time check; this
+// test names the offenders directly).
+void collectUndescribed(const Level& level, const std::string& path, std::vector<std::string>& out) {
+  for (const Entry& e : level.entries) {
+    if (e.simple && e.simple->description.empty()) {
+      out.push_back(path + "/" + e.name);
+    } else if (e.factor) {
+      if (e.factor->description.empty()) {
+        out.push_back(path + "/" + e.name);
+      }
+      collectUndescribed(e.factor->body, path + "/" + e.name, out);
+    } else if (e.block) {
+      collectUndescribed(e.block->body, path, out);
+    }
+  }
+}
+
+TEST(BuiltinCatalog, EveryKeywordHasADescription) {
+  std::vector<std::string> undescribed;
+  for (const auto& name : Catalog::builtin().commandNames()) {
+    const CommandSpec* c = Catalog::builtin().find(name);
+    if (c->description.empty()) {
+      undescribed.push_back(name);
+    }
+    collectUndescribed(c->body, name, undescribed);
+  }
+  std::string all;
+  for (const auto& u : undescribed) {
+    all += u + "\n";
+  }
+  EXPECT_TRUE(undescribed.empty()) << "keywords without a description (add fr= or a GLOSSAIRE entry):\n"
+                                   << all;
+}
+
 TEST(BuiltinCatalog, BrokenCatalogueIsReportedWithFileAndKeyword) {
   Catalog c =
       Catalog::fromFiles({{"common/TYPES.cata", "TYPES(modele=())\n"},
@@ -437,6 +471,13 @@ TEST(Commands, NoneMeansAbsent) {
   ASSERT_TRUE(valid(*r));
   EXPECT_FALSE(r->last().keywords.has("CARA_ELEM"));
   EXPECT_FALSE(r->last().keywords.occurrences("INCREMENT")[0].has("INST_FIN"));
+}
+
+TEST(Commands, DictAcceptedWhereAFactorKeywordIsExpected) {
+  auto r = run("opts = {'GROUP_MA_MAIT': 'A', 'GROUP_MA_ESCL': 'B', 'ALGO_CONT': 'LAC'}\n"
+               "C = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ZONE=opts)\n");
+  ASSERT_TRUE(valid(*r));
+  EXPECT_EQ(zone(r->last()).text("APPARIEMENT"), "MORTAR");
 }
 
 TEST(Generations, NoeudKeywordsOf2020) {
