@@ -1,0 +1,160 @@
+// Lame thick cylinder under internal pressure (plane strain), solved by the linear static
+// driver in D_PLAN (quarter ring) and AXIS (a slice with u_z = 0 on both faces), against
+// u_r(r) = (1 + nu) p a^2 / (E (b^2 - a^2)) ((1 - 2 nu) r + b^2 / r). The displacement L2 error
+// must converge with order about 2 for linear and 3 for quadratic cells; the reactions balance
+// the pressure resultant (per radian in AXIS).
+
+#include "solver/fem/BoxMesh.hpp"
+#include "solver/fem/Kinematics.hpp"
+#include "solver/nonlinear/LinearStatic.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace stella::nonlinear {
+namespace {
+
+constexpr double a = 1.0, b = 2.0, p = 10.0, young = 1000.0, nu = 0.3, height = 0.5;
+
+double exactRadial(double r) {
+  return (1 + nu) * p * a * a / (young * (b * b - a * a)) * ((1 - 2 * nu) * r + b * b / r);
+}
+
+// Boundary edges of a 2D box-mesh cell lying on the parametric line x = 0, in cell order
+// (counter-clockwise cells: the domain is on the left, the normal points out).
+void collectInnerEdges(const fem::PlainMesh& param, CellBlock& skin) {
+  const bool quadratic = info(param.cellType).quadratic;
+  const int corners = (param.cellType == CellType::TRIA3 || param.cellType == CellType::TRIA6) ? 3 : 4;
+  skin.type = quadratic ? CellType::SEG3 : CellType::SEG2;
+  for (int c = 0; c < param.cellCount(); ++c) {
+    const int* n = param.cell(c);
+    for (int e = 0; e < corners; ++e) {
+      const int i = n[e], j = n[(e + 1) % corners];
+      if (std::abs(param.coordinates(i, 0)) < 1e-12 && std::abs(param.coordinates(j, 0)) < 1e-12) {
+        skin.connectivity.push_back(i);
+        skin.connectivity.push_back(j);
+        if (quadratic) {
+          skin.connectivity.push_back(n[corners + e]);
+        }
+      }
+    }
+  }
+}
+
+struct Errors {
+  double l2 = 0.0;
+  double reactionBalance = 0.0;
+};
+
+Errors solveLame(CellType type, fem::Modelling m, int divisions) {
+  const fem::PlainMesh param = fem::boxMesh(type, {divisions, divisions, 1}, {1.0, 1.0, 1.0});
+  LinearStaticProblem pb;
+  pb.modelling = m;
+  pb.material = {young, nu};
+  pb.coordinates.resize(param.nodeCount(), 2);
+  for (int n = 0; n < param.nodeCount(); ++n) {
+    const double s = param.coordinates(n, 0), t = param.coordinates(n, 1);
+    const double r = a + (b - a) * s;
+    if (m == fem::Modelling::Axisymmetric) {
+      pb.coordinates.row(n) << r, height * t;
+    } else {
+      const double theta = 0.5 * std::numbers::pi * t;
+      pb.coordinates.row(n) << r * std::cos(theta), r * std::sin(theta);
+    }
+    if (std::abs(t) < 1e-12) {
+      pb.imposed.push_back({n, 1, 0.0}); // DY = 0 on theta = 0 (or z = 0)
+    }
+    if (std::abs(t - 1.0) < 1e-12) {
+      pb.imposed.push_back({n, m == fem::Modelling::Axisymmetric ? 1 : 0, 0.0});
+    }
+  }
+  pb.volumes.push_back({type, param.connectivity});
+  PressureLoad load;
+  load.pressure = p;
+  collectInnerEdges(param, load.skin);
+  pb.pressures.push_back(load);
+  const LinearStaticResult res = solveLinearStatic(pb);
+
+  Errors err;
+  // L2 error of the displacement with the volume rule (weight r in AXIS, consistently)
+  double num = 0.0, den = 0.0;
+  fem::ElementKinematics kin;
+  const int npc = param.nodesPerCell();
+  for (int c = 0; c < param.cellCount(); ++c) {
+    Eigen::MatrixXd x(npc, 2), u(npc, 2);
+    for (int k = 0; k < npc; ++k) {
+      x.row(k) = pb.coordinates.row(param.cell(c)[k]);
+      u.row(k) = res.displacement.row(param.cell(c)[k]);
+    }
+    fem::computeKinematics(type, m, x, kin);
+    for (int q = 0; q < kin.pointCount(); ++q) {
+      const Eigen::VectorXd& shape = kin.table->values[static_cast<std::size_t>(q)];
+      const Eigen::Vector2d uh = u.transpose() * shape;
+      const Eigen::Vector2d xq = kin.points[static_cast<std::size_t>(q)].head<2>();
+      Eigen::Vector2d ue;
+      if (m == fem::Modelling::Axisymmetric) {
+        ue << exactRadial(xq[0]), 0.0;
+      } else {
+        ue = exactRadial(xq.norm()) * xq / xq.norm();
+      }
+      num += kin.weights[static_cast<std::size_t>(q)] * (uh - ue).squaredNorm();
+      den += kin.weights[static_cast<std::size_t>(q)] * ue.squaredNorm();
+    }
+  }
+  err.l2 = std::sqrt(num / den);
+  // radial equilibrium of the supports: AXIS, the faces z = 0 and z = h carry no net radial
+  // force; D_PLAN, the reactions on the symmetry lines balance the pressure: sum FY on theta=0
+  // equals -(force of p on the quarter arc along Y) = -p a (chord), approximately.
+  if (m == fem::Modelling::Axisymmetric) {
+    err.reactionBalance = std::abs(res.reactions.col(0).sum()) / (p * a * height);
+  } else {
+    double fy = 0.0;
+    for (const auto& imp : pb.imposed) {
+      if (imp.component == 1) {
+        fy += res.reactions(imp.node, 1);
+      }
+    }
+    err.reactionBalance = std::abs(fy + p * a) / (p * a);
+  }
+  return err;
+}
+
+void checkOrder(CellType type, fem::Modelling m, double minOrder) {
+  const Errors coarse = solveLame(type, m, 4);
+  const Errors fine = solveLame(type, m, 8);
+  const Errors finer = solveLame(type, m, 16);
+  const double order1 = std::log2(coarse.l2 / fine.l2);
+  const double order2 = std::log2(fine.l2 / finer.l2);
+  std::cout << name(type) << "/" << fem::modellingName(m) << " L2 errors " << coarse.l2 << " " << fine.l2
+            << " " << finer.l2 << " orders " << order1 << " " << order2 << "\n";
+  EXPECT_GT(order2, minOrder) << name(type) << "/" << fem::modellingName(m);
+  EXPECT_LT(finer.l2, 1e-2) << name(type);
+  if (m == fem::Modelling::Axisymmetric) {
+    EXPECT_LT(finer.reactionBalance, 1e-10) << name(type);
+  }
+}
+
+TEST(LameCylinder, PlaneStrainConvergenceOrders) {
+  checkOrder(CellType::QUAD4, fem::Modelling::PlaneStrain, 1.8);
+  checkOrder(CellType::TRIA3, fem::Modelling::PlaneStrain, 1.8);
+  checkOrder(CellType::QUAD8, fem::Modelling::PlaneStrain, 2.7);
+  checkOrder(CellType::TRIA6, fem::Modelling::PlaneStrain, 2.7);
+}
+
+TEST(LameCylinder, AxisymmetricConvergenceOrders) {
+  checkOrder(CellType::QUAD4, fem::Modelling::Axisymmetric, 1.8);
+  checkOrder(CellType::QUAD8, fem::Modelling::Axisymmetric, 2.7);
+  checkOrder(CellType::TRIA6, fem::Modelling::Axisymmetric, 2.7);
+}
+
+// The resultant of the pressure on the quarter arc, p * a along X and along Y, is carried by the
+// symmetry supports: checks signs and the per-unit-thickness scaling of D_PLAN loads.
+TEST(LameCylinder, PlaneStrainReactionsBalanceThePressure) {
+  const Errors e = solveLame(CellType::QUAD8, fem::Modelling::PlaneStrain, 8);
+  EXPECT_LT(e.reactionBalance, 1e-3);
+}
+
+} // namespace
+} // namespace stella::nonlinear
