@@ -170,7 +170,12 @@ std::string KeywordTree::format(int indent) const {
   }
   for (const auto& f : factors_) {
     for (const auto& occ : f.occurrences) {
-      out << pad << f.name << "=_F(\n" << occ.format(indent + 4) << pad << "),\n";
+      std::string inner = occ.format(indent + 4);
+      if (inner.empty()) {
+        out << pad << f.name << "=_F(),\n";
+      } else {
+        out << pad << f.name << "=_F(\n" << inner << pad << "),\n";
+      }
     }
   }
   return out.str();

@@ -186,6 +186,19 @@ TEST(BuiltinCatalog, BrokenCatalogueIsReportedWithFileAndKeyword) {
   EXPECT_NE(all.find("CMD/D: defined both unconditionally and in block b_x"), std::string::npos) << all;
 }
 
+TEST(BuiltinCatalog, CatalogueFileErrorsNameTheFileAndLine) {
+  try {
+    Catalog::fromFiles(
+        {{"BAD.cata", "BAD = OPER(result='x', fr='x',\n  A=SIMP(statut='f', typ='R', defautt=1.0))\n"}});
+    FAIL() << "a broken catalogue file must be refused";
+  } catch (const InternalError& e) {
+    std::string what = e.what();
+    EXPECT_NE(what.find("catalog/commands/BAD.cata:2:"), std::string::npos) << what;
+    EXPECT_NE(what.find("SIMP has no attribute defautt"), std::string::npos) << what;
+  }
+  EXPECT_THROW(Catalog::fromFiles({{"NOPE.cata", "X = 1\n"}}), InternalError); // must define NOPE
+}
+
 TEST(DefiContact, DefaultsOfTheDiscreteFormulation) {
   auto r = run("CONT = DEFI_CONTACT(MODELE=MO, ZONE=_F(GROUP_MA_MAIT='Top_B', GROUP_MA_ESCL='Bottom_C'))\n");
   ASSERT_TRUE(valid(*r));
