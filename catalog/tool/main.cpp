@@ -1,7 +1,8 @@
 // stella-catalog: developer tool for the keyword catalogue, usable before and besides the
 // `stella` executable: `check` (load-time checks), `describe NAME`, `json`, `docs DIR`
 // (regenerate doc/catalog), `validate FILE.comm...` (check every call of command files against
-// the catalogue, without running operators), `coverage FILE.comm...` (keywords and values no
+// the catalogue, without running operators), `tree FILE.comm...` (the same, printing every
+// validated keyword tree with its defaults), `coverage FILE.comm...` (keywords and values no
 // file uses).
 #include "catalog/Catalog.hpp"
 
@@ -14,9 +15,14 @@ namespace {
 // Validates every command call of a file against the catalogue without running operators.
 class ValidatingHandler : public stella::CommandHandler {
 public:
+  bool printTrees = false;
   stella::Value callCommand(const std::string& command, const stella::CallArguments& args,
                             const std::string& target) override {
     stella::ValidatedCall v = stella::Catalog::builtin().validate(command, args);
+    if (printTrees) {
+      std::cout << (target.empty() ? "" : target + " = ") << command << "(\n"
+                << v.keywords.format(4) << ")\n";
+    }
     finished_ = finished_ || command == "FIN";
     if (v.reused) {
       return stella::Value(v.reused);
@@ -49,10 +55,11 @@ public:
   }
 };
 
-int validateFiles(const std::vector<std::string>& files) {
+int validateFiles(const std::vector<std::string>& files, bool printTrees) {
   int failed = 0;
   for (const auto& f : files) {
     ValidatingHandler handler;
+    handler.printTrees = printTrees;
     PrintingSink sink;
     stella::Interpreter interp(handler, sink);
     for (const auto& name : stella::Catalog::builtin().commandNames()) {
@@ -102,7 +109,10 @@ int run(const std::vector<std::string>& args) {
     return 0;
   }
   if (what == "validate" && args.size() > 1) {
-    return validateFiles(std::vector<std::string>(args.begin() + 1, args.end()));
+    return validateFiles(std::vector<std::string>(args.begin() + 1, args.end()), false);
+  }
+  if (what == "tree" && args.size() > 1) {
+    return validateFiles(std::vector<std::string>(args.begin() + 1, args.end()), true);
   }
   if (what == "coverage") {
     std::vector<std::filesystem::path> files(args.begin() + 1, args.end());
