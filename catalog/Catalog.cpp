@@ -207,7 +207,11 @@ std::string jsonValue(const Value& v) {
     return std::to_string(v.asInt());
   }
   if (v.isReal()) {
-    return fmt::format("{}", v.asReal());
+    std::string text = fmt::format("{}", v.asReal()); // shortest round-trip form
+    if (text.find_first_of(".eEn") == std::string::npos) {
+      text += ".0"; // keep reals recognisable as reals (100.0, not 100)
+    }
+    return text;
   }
   if (v.isBool()) {
     return v.asBool() ? "true" : "false";
