@@ -161,6 +161,7 @@ JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
   }
 
   std::unique_ptr<Session> session;
+  bool internalFailure = false;
   try {
     const Catalog& catalog = Catalog::builtin();
     session = std::make_unique<Session>(catalog, mess, resuFile, sessionOptions);
@@ -191,11 +192,14 @@ JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
   } catch (const std::exception& e) {
     mess << " ! <F> <INTERNAL_2> internal error in stella: " << e.what() << "\n"
          << "   this is a bug in stella, not in your study: please report it with the command file\n";
-    job.diagnostic = JobDiagnostic::AbnormalAbort;
+    internalFailure = true;
   }
 
   SessionCounts counts;
   if (session) {
+    if (internalFailure) {
+      session->noteFailure(FailureKind::Abort);
+    }
     for (const auto* d : missing) {
       const auto& opened = session->openedUnits();
       if (std::find(opened.begin(), opened.end(), d->unit) == opened.end()) {
@@ -221,9 +225,6 @@ JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
     counts.failure = FailureKind::Abort;
   }
   JobDiagnostic diagnostic = diagnose(counts, spec.isTestcase);
-  if (job.diagnostic == JobDiagnostic::AbnormalAbort && session && counts.failure == FailureKind::None) {
-    diagnostic = JobDiagnostic::AbnormalAbort;
-  }
   diagnostic = applyExpected(diagnostic, spec.expectedDiagnostics);
   job.diagnostic = diagnostic;
 

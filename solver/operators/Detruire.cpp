@@ -1,5 +1,5 @@
-// DETRUIRE: destroys concepts (CONCEPT=_F(NOM=(...))). Using a destroyed concept afterwards is
-// an error that names it.
+// DETRUIRE: destroys concepts (CONCEPT=_F(NOM=(...)), or NOM=(...) directly). Using a destroyed
+// concept afterwards is an error that names it.
 
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
@@ -8,13 +8,18 @@ namespace stella {
 
 namespace {
 
+void destroy(OperatorCall& call, const KeywordTree& names) {
+  for (const auto& concept_ : names.conceptValues("NOM")) {
+    concept_->destroyed = true;
+    concept_->data.reset();
+    call.session.message() << "  Concept " << concept_->name << " destroyed\n";
+  }
+}
+
 Value runDetruire(OperatorCall& call) {
+  destroy(call, call.keywords);
   for (const KeywordTree& occurrence : call.keywords.occurrences("CONCEPT")) {
-    for (const auto& concept_ : occurrence.conceptValues("NOM")) {
-      concept_->destroyed = true;
-      concept_->data.reset();
-      call.session.message() << "  Concept " << concept_->name << " destroyed\n";
-    }
+    destroy(call, occurrence);
   }
   return Value();
 }

@@ -4,7 +4,7 @@
 # diagnostic words and exit codes.
 # Usage: export-errors.sh PATH/TO/stella
 set -uo pipefail
-stella="$1"
+stella="$(readlink -f "$1")"
 dir="$(mktemp -d)"
 trap 'rm -rf "$dir"' EXIT
 fails=0
