@@ -68,4 +68,30 @@ std::string DofNumbering::describeText(int equation, std::span<const std::string
   return text;
 }
 
+std::pair<std::string, std::string>
+DofNumbering::explainSingularity(int equation, std::span<const std::string> nodeNames) const {
+  if (equation < 0 || equation >= dofCount()) {
+    return {"the stiffness matrix is singular: a rigid-body motion of the model is not blocked",
+            "block every free motion with DDL_IMPO, or hold the free bodies with discrete springs "
+            "(DIS_T / 2D_DIS_T on POI1 cells with small stiffnesses K_T_D_N), as section 4.4.2 of the "
+            "contact notice advises"};
+  }
+  const EquationInfo& i = describe(equation);
+  if (i.isLagrange()) {
+    return {"the stiffness matrix is singular at the Lagrange multiplier " +
+                describeText(equation, nodeNames) +
+                ": this condition is redundant with another one (the same DOF imposed twice, or "
+                "relations that are not independent)",
+            "remove the duplicate condition (DDL_IMPO, LIAISON_*, or a contact zone that overlaps "
+            "another condition)"};
+  }
+  return {"the stiffness matrix is singular: DOF " + std::string(componentName(i.component)) + " of node " +
+              describeText(equation, nodeNames).substr(0, describeText(equation, nodeNames).find(' ')) +
+              " is free (a rigid-body motion of the part holding this node is not blocked)",
+          "block the motion (DDL_IMPO on that node or its group), or hold the body with discrete "
+          "springs (DIS_T / 2D_DIS_T on POI1 cells with small stiffnesses K_T_D_N), as section 4.4.2 "
+          "of the contact notice advises; a body held only by contact needs such springs until "
+          "contact closes"};
+}
+
 } // namespace stella::linalg

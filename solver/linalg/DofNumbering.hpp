@@ -9,6 +9,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace stella::linalg {
@@ -47,6 +48,11 @@ public:
   const EquationInfo& describe(int equation) const { return info_[static_cast<std::size_t>(equation)]; }
   // "N12 DY" style text, with 1-based node numbers unless names are given.
   std::string describeText(int equation, std::span<const std::string> nodeNames = {}) const;
+
+  // The words of a singular-stiffness error at `equation` (STOP_SINGULIER): what is free and
+  // what to do, for the operator to put in a UserError. Returns {message, note}.
+  std::pair<std::string, std::string> explainSingularity(int equation,
+                                                         std::span<const std::string> nodeNames = {}) const;
 
 private:
   int components_;

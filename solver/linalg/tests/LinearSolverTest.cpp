@@ -196,6 +196,12 @@ TEST(LinearSolver, SingularMatrixNamesAFreeDof) {
       ASSERT_GE(e.equation(), 0) << s->backendName();
       EXPECT_EQ(p.numbering->describe(e.equation()).component, Component::DY)
           << s->backendName() << ": " << p.numbering->describeText(e.equation());
+      const auto [message, note] = p.numbering->explainSingularity(e.equation());
+      EXPECT_NE(message.find("DOF DY of node N"), std::string::npos) << message;
+      EXPECT_NE(note.find("DIS_T"), std::string::npos);
+      if (m == SolverMethod::Mumps) {
+        std::cout << "singular model message: " << message << "\n  note: " << note << "\n";
+      }
     }
   }
 }
