@@ -29,12 +29,15 @@ void computeKinematics(CellType type, Modelling m, const Eigen::Ref<const Eigen:
     const auto uq = static_cast<std::size_t>(q);
     const Eigen::MatrixXd& dn = t.gradients[uq];
     const Eigen::VectorXd& n = t.values[uq];
-    const Eigen::MatrixXd jac = x.transpose() * dn; // dim x dim: dx_i / dxi_j
+    // fixed maximum sizes: no heap allocation per Gauss point
+    const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3> jac =
+        x.transpose() * dn; // dx_i / dxi_j
     const double det = jac.determinant();
     if (!(det > 0.0)) {
       throw DegenerateElementError(q, det);
     }
-    const Eigen::MatrixXd g = dn * jac.inverse(); // nno x dim: dN / dx
+    const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3> inv = jac.inverse();
+    const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 27, 3> g = dn * inv; // dN / dx
     Eigen::Vector3d p = Eigen::Vector3d::Zero();
     p.head(dim) = x.transpose() * n;
     out.points[uq] = p;
