@@ -112,6 +112,21 @@ void Mesh::setNodeGroup(const std::string& name, std::vector<NodeId> nodes) {
   nodeGroups_[name] = std::move(nodes);
 }
 
+void Mesh::setOrderedNodeGroup(const std::string& name, std::vector<NodeId> nodes) {
+  std::vector<NodeId> seen(nodes);
+  sortUnique(seen);
+  std::vector<bool> taken(seen.size(), false);
+  std::vector<NodeId> out;
+  for (const NodeId n : nodes) {
+    const auto k = static_cast<std::size_t>(std::lower_bound(seen.begin(), seen.end(), n) - seen.begin());
+    if (!taken[k]) {
+      taken[k] = true;
+      out.push_back(n);
+    }
+  }
+  nodeGroups_[name] = std::move(out);
+}
+
 std::vector<NodeId> Mesh::nodesOfCells(std::span<const CellId> cells) const {
   std::vector<NodeId> nodes;
   for (const CellId c : cells) {

@@ -70,7 +70,8 @@ public:
   std::optional<NodeId> findNode(std::string_view name) const { return nodeNames_.find(name); }
   std::optional<CellId> findCell(std::string_view name) const { return cellNames_.find(name); }
 
-  // ---- groups (sorted, duplicate-free index lists; names in alphabetical order)
+  // ---- groups (sorted, duplicate-free index lists, except node groups set ordered by
+  // NOEUD_ORDO/SEGM_DROI_ORDO; names in alphabetical order)
   const std::map<std::string, std::vector<CellId>>& cellGroups() const { return cellGroups_; }
   const std::map<std::string, std::vector<NodeId>>& nodeGroups() const { return nodeGroups_; }
   const std::vector<CellId>* cellGroup(const std::string& name) const;
@@ -80,6 +81,8 @@ public:
   // Sets (replaces) a group; the list is sorted and made unique.
   void setCellGroup(const std::string& name, std::vector<CellId> cells);
   void setNodeGroup(const std::string& name, std::vector<NodeId> nodes);
+  // Sets a node group keeping the given order (duplicates after the first occurrence removed).
+  void setOrderedNodeGroup(const std::string& name, std::vector<NodeId> nodes);
   bool removeCellGroup(const std::string& name) { return cellGroups_.erase(name) != 0; }
   bool removeNodeGroup(const std::string& name) { return nodeGroups_.erase(name) != 0; }
 
