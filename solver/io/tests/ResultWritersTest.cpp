@@ -1,0 +1,211 @@
+// Result writers checked by an independent reader: a result with two steps (nodal DEPL, a
+// per-cell field, a Gauss-point field) written as MED and VTU is read back by meshio (Debian's
+// python3) and every value compared with the formula it was built from.
+
+#include "solver/io/ResultWriters.hpp"
+#include "solver/io/MeshIO.hpp"
+#include "solver/io/tests/MeshTestUtil.hpp"
+#include "solver/mesh/MeshGeometry.hpp"
+#include "solver/mesh/StructuredMesher.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+
+namespace stella {
+namespace {
+
+// DX = x + t, DY = 2 y, DZ = 3 z t; ERRE = centroid x (per cell); SIEF_ELGA SIXX = 100 centroid
+// x + point, SIYY = t, on the hexahedra (8 points each) only.
+Result makeResult(const Mesh& m) {
+  Result r;
+  r.type = "evol_elas";
+  for (const double t : {0.0, 1.0}) {
+    ResultStep& s = r.addStep(t, 0);
+    auto depl = std::make_shared<Field>(
+        Field::nodal("DEPL_R", {"DX", "DY", "DZ"}, static_cast<std::size_t>(m.nodeCount())));
+    for (NodeId n = 0; n < m.nodeCount(); ++n) {
+      const auto x = m.point(n);
+      depl->value(static_cast<std::size_t>(n), 0) = x[0] + t;
+      depl->value(static_cast<std::size_t>(n), 1) = 2 * x[1];
+      depl->value(static_cast<std::size_t>(n), 2) = 3 * x[2] * t;
+    }
+    s.fields["DEPL"] = depl;
+    auto erre = std::make_shared<Field>(
+        Field::perCell("ERRE_R", {"ERREST"}, static_cast<std::size_t>(m.cellCount())));
+    std::vector<int> points;
+    for (CellId c = 0; c < m.cellCount(); ++c) {
+      erre->value(static_cast<std::size_t>(c), 0) = cellCentroid(m, c)[0];
+      points.push_back(dimension(m.cellType(c)) == 3 ? 8 : 0);
+    }
+    s.fields["ERRE_ELEM"] = erre;
+    auto sief = std::make_shared<Field>(
+        Field::perPoint(FieldSupport::GaussPoint, "SIEF_R", {"SIXX", "SIYY"}, points));
+    for (CellId c = 0; c < m.cellCount(); ++c) {
+      for (int p = 0; p < points[static_cast<std::size_t>(c)]; ++p) {
+        const std::size_t e = sief->firstPoint(static_cast<std::size_t>(c)) + static_cast<std::size_t>(p);
+        sief->value(e, 0) = 100 * cellCentroid(m, c)[0] + p;
+        sief->value(e, 1) = t;
+      }
+    }
+    s.fields["SIEF_ELGA"] = sief;
+  }
+  return r;
+}
+
+int runPython(const std::filesystem::path& dir, const std::string& script, const std::string& arg) {
+  const auto py = dir / "check.py";
+  std::ofstream(py) << script;
+  const std::string cmd =
+      "/usr/bin/python3 " + py.string() + " " + arg + " > " + (dir / "py.log").string() + " 2>&1";
+  const int rc = std::system(cmd.c_str());
+  if (rc != 0) {
+    std::ifstream in(dir / "py.log");
+    std::cerr << in.rdbuf();
+  }
+  return rc;
+}
+
+// Nodal and per-cell fields through meshio; Gauss-point values through h5py on MED's layout
+// (component-major, then cell, then point: meshio 5.0 reshapes multi-point data in another
+// order, so it cannot check them).
+const char* const medCheck = R"(
+import sys, numpy as np, meshio, h5py
+m = meshio.read(sys.argv[1], file_format="med")
+p = m.points
+f = h5py.File(sys.argv[1], "r")
+assert f["GAUSS/LOC_HEXA8_8"].attrs["NBR"] == 8
+for i, t in enumerate([0.0, 1.0]):
+    d = m.point_data["RESU____DEPL[%d] - %g" % (i, t)]
+    assert np.allclose(d[:, 0], p[:, 0] + t), "DX"
+    assert np.allclose(d[:, 1], 2 * p[:, 1]), "DY"
+    assert np.allclose(d[:, 2], 3 * p[:, 2] * t), "DZ"
+    erre = m.cell_data["RESU____ERRE_ELEM[%d] - %g" % (i, t)]
+    block = m.cells[0]
+    assert block.type == "hexahedron" and len(block.data) == 2
+    centroid_x = p[block.data][:, :, 0].mean(axis=1)
+    assert np.allclose(np.ravel(erre[0]), centroid_x), "ERREST"
+    steps = f["CHA/RESU____SIEF_ELGA"]
+    step = [steps[k] for k in steps if abs(steps[k].attrs["PDT"] - t) < 1e-12][0]
+    he8 = step["MAI.HE8"]
+    co = he8[he8.attrs["PFL"].decode()]["CO"][()].reshape(2, 2, 8)
+    for c in range(2):
+        assert np.allclose(co[0, c], 100 * centroid_x[c] + np.arange(8)), "SIXX"
+        assert np.allclose(co[1, c], t), "SIYY"
+print("OK")
+)";
+
+// The hexahedra of a structured box without its skin (meshio wants every field on every cell
+// type of the mesh).
+Mesh volumeOnly() {
+  const Mesh full = buildStructuredMesh({CellType::HEXA8, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}});
+  Mesh m;
+  for (NodeId n = 0; n < full.nodeCount(); ++n) {
+    m.addNode(full.point(n));
+  }
+  for (const CellId c : *full.cellGroup("VOLUME")) {
+    m.addCell(full.cellType(c), full.cellNodes(c));
+  }
+  return m;
+}
+
+TEST(ResultWriters, MedReadByMeshio) {
+  const auto dir = testing::tempDir("med_result");
+  const Mesh m = volumeOnly();
+  const Result r = makeResult(m);
+  ResultOutput out;
+  out.resultName = "RESU";
+  writeMedResult(dir / "r.med", m, "MAIL", &r, out);
+  EXPECT_EQ(runPython(dir, medCheck, (dir / "r.med").string()), 0);
+  // The mesh part reads back with our own reader too.
+  EXPECT_EQ(readMedMesh(dir / "r.med").cellCount(), m.cellCount());
+}
+
+TEST(ResultWriters, MedFieldSelectionAndPartialField) {
+  const auto dir = testing::tempDir("med_partial");
+  const Mesh m = buildStructuredMesh({CellType::QUAD4, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}});
+  Result r;
+  ResultStep& s = r.addStep(0.5, 1);
+  auto cont = std::make_shared<Field>(
+      Field::nodal("INFC_R", {"CONT", "JEU"}, static_cast<std::size_t>(m.nodeCount())));
+  cont->markPartial();
+  for (const NodeId n : *m.nodeGroup("YMAX")) {
+    cont->setDefined(static_cast<std::size_t>(n), 0);
+    cont->setDefined(static_cast<std::size_t>(n), 1);
+    cont->value(static_cast<std::size_t>(n), 0) = 1.0;
+    cont->value(static_cast<std::size_t>(n), 1) = m.point(n)[0];
+  }
+  s.fields["CONT_NOEU"] = cont;
+  ResultOutput out;
+  out.resultName = "STAT";
+  writeMedResult(dir / "p.med", m, "", &r, out);
+  // Read the raw MED layout with h5py: a profile of the YMAX nodes and their values only.
+  const char* script = R"(
+import sys, numpy as np, h5py
+f = h5py.File(sys.argv[1], "r")
+step = f["CHA/STAT____CONT_NOEU"]
+key = list(step.keys())[0]
+assert abs(step[key].attrs["PDT"] - 0.5) < 1e-15
+noe = step[key]["NOE"]
+pfl = noe.attrs["PFL"].decode()
+nodes = f["PROFILS"][pfl]["PFL"][()]
+co = noe[pfl]["CO"][()].reshape(len(nodes), 2, order="F")
+x = f["ENS_MAA/MAIL"][list(f["ENS_MAA/MAIL"].keys())[0]]["NOE/COO"][()].reshape(-1, 2, order="F")
+assert list(nodes) == [4, 5, 6], nodes
+assert np.allclose(co[:, 0], 1.0) and np.allclose(co[:, 1], x[nodes - 1, 0])
+print("OK")
+)";
+  EXPECT_EQ(runPython(dir, script, (dir / "p.med").string()), 0);
+}
+
+TEST(ResultWriters, VtuReadByMeshio) {
+  const auto dir = testing::tempDir("vtu_result");
+  const Mesh m = buildStructuredMesh({CellType::HEXA20, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}});
+  const Result r = makeResult(m);
+  const auto files = writeVtuResult(dir / "r.pvd", m, &r, {});
+  ASSERT_EQ(files.size(), 3u);
+  const char* script = R"(
+import sys, numpy as np, meshio
+m = meshio.read(sys.argv[1])
+p = m.points
+d = m.point_data["DEPL"]
+assert np.allclose(d[:, 0], p[:, 0] + 1.0) and np.allclose(d[:, 2], 3 * p[:, 2])
+for block, e in zip(m.cells, m.cell_data["ERRE_ELEM"]):
+    assert np.allclose(np.ravel(e), p[block.data][:, :8 if block.type == "hexahedron20" else 4, 0].mean(axis=1)), block.type
+    if block.type == "hexahedron20":
+        # VTK order: mid nodes 8-11 bottom, 12-15 top, 16-19 vertical.
+        x = p[block.data]
+        assert np.allclose(x[:, 12], (x[:, 4] + x[:, 5]) / 2) and np.allclose(x[:, 16], (x[:, 0] + x[:, 4]) / 2)
+print("OK")
+)";
+  EXPECT_EQ(runPython(dir, script, (dir / "r_1.vtu").string()), 0);
+}
+
+TEST(ResultWriters, ResultTablesAndGmsh) {
+  const auto dir = testing::tempDir("text_result");
+  const Mesh m = buildStructuredMesh({CellType::QUAD4, {1, 1, 1}, {1, 1, 1}, {0, 0, 0}});
+  Result r;
+  ResultStep& s = r.addStep(2.0, 1);
+  auto depl = std::make_shared<Field>(Field::nodal("DEPL_R", {"DX", "DY"}, 4));
+  depl->value(3, 1) = -0.25;
+  s.fields["DEPL"] = depl;
+  ResultOutput out;
+  out.resultName = "RES";
+  out.components = {"DY"};
+  const std::string t = formatResultTables(m, r, out);
+  EXPECT_NE(t.find("CHAMP DEPL DU RESULTAT RES NUME_ORDRE 1 INST 2.000000E+00"), std::string::npos) << t;
+  EXPECT_NE(t.find(" N4       -2.500000E-01"), std::string::npos) << t;
+  EXPECT_EQ(t.find("DX"), std::string::npos);
+  writeGmshResult(dir / "r.msh", m, &r, out);
+  const char* script = R"(
+import sys, meshio
+m = meshio.read(sys.argv[1])
+assert abs(m.point_data["DEPL_DY"][3] + 0.25) < 1e-15
+print("OK")
+)";
+  EXPECT_EQ(runPython(dir, script, (dir / "r.msh").string()), 0);
+}
+
+} // namespace
+} // namespace stella
