@@ -114,8 +114,8 @@ struct Dumper {
       text += std::string(" ") + binaryOpText(static_cast<BinaryOp>(e->op));
       break;
     case ExprKind::Compare:
-      for (CompareOp op : e->ops) {
-        text += std::string(" '") + compareOpText(op) + "'";
+      for (std::size_t i = 0; i < e->compareCount(); ++i) {
+        text += std::string(" '") + compareOpText(e->compareOp(i)) + "'";
       }
       break;
     default:

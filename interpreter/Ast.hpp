@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <memory_resource>
 #include <string>
 #include <vector>
 
@@ -30,7 +31,7 @@ enum class ExprKind : std::uint8_t {
   CompFor,  // items[0]: target, items[1]: iterable, then `if` conditions
   Unary,    // op: UnaryOp; items[0]
   Binary,   // op: BinaryOp; items[0], items[1]
-  Compare,  // items[0..n]; ops[0..n-1]: CompareOp
+  Compare,  // items[0..n]; compareOp(0..n-1)
   And,      // items: operands (two or more)
   Or,
   Not,
@@ -63,21 +64,33 @@ enum class UnaryOp : std::uint8_t { Neg, Plus, Invert };
 enum class CompareOp : std::uint8_t { Lt, Gt, Le, Ge, Eq, Ne, In, NotIn, Is, IsNot };
 
 struct Expr;
-using ExprPtr = std::unique_ptr<Expr>;
+// Expression nodes live in their Module's arena: deleting one runs its destructor only.
+struct ExprDeleter {
+  void operator()(Expr* e) const;
+};
+using ExprPtr = std::unique_ptr<Expr, ExprDeleter>;
 
 struct Expr {
   ExprKind kind;
   std::uint8_t op = 0;
   Pos pos;
-  int depth = 1; // height of the subtree, bounded by the parser
-  std::string text;
-  std::int64_t intValue = 0;
-  double realValue = 0.0;
-  std::vector<ExprPtr> items;
-  std::vector<CompareOp> ops;
+  int depth = 1;    // height of the subtree, bounded by the parser
+  std::string text; // a Compare node keeps its operators here, one CompareOp per char
+  union {
+    std::int64_t intValue = 0; // Int
+    double realValue;          // Real, Imaginary
+  };
+  std::pmr::vector<ExprPtr> items;
 
-  Expr(ExprKind k, Pos p) : kind(k), pos(p) {}
+  Expr(ExprKind k, Pos p, std::pmr::memory_resource* arena) : kind(k), pos(p), items(arena) {}
+  std::size_t compareCount() const { return text.size(); }
+  CompareOp compareOp(std::size_t i) const { return static_cast<CompareOp>(text[i]); }
+  void addCompareOp(CompareOp c) { text += static_cast<char>(c); }
 };
+
+inline void ExprDeleter::operator()(Expr* e) const {
+  e->~Expr();
+}
 
 enum class StmtKind : std::uint8_t {
   Expr,      // exprs[0]
@@ -133,6 +146,9 @@ struct Stmt {
 // A parsed file. Statements refer to it for their locations; user functions keep it alive.
 struct Module {
   std::shared_ptr<const SourceFile> file;
+  // Memory of the expression nodes (declared before `body`, so destroyed after it).
+  std::unique_ptr<std::pmr::monotonic_buffer_resource> arena =
+      std::make_unique<std::pmr::monotonic_buffer_resource>(1 << 16);
   std::vector<StmtPtr> body;
 };
 

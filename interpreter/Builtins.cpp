@@ -156,10 +156,9 @@ Value sum(Evaluator& ev, const CallArguments& a) {
   if (const Value* s = keyword(a, "start")) {
     total = *s;
   }
-  forEachItem(a.positional[0], [&](const Value& item) {
+  for (const Value& item : iterableItems(a.positional[0], ev.options().limits)) {
     total = binaryOperation(BinaryOp::Add, total, item, ev.options().limits);
-    return true;
-  });
+  }
   return total;
 }
 
@@ -186,7 +185,7 @@ Value roundValue(const CallArguments& a) {
     return Value(std::nearbyint(d / scale) * scale);
   }
   // correctly rounded on the exact binary value, like Python (round(2.675, 2) == 2.67)
-  char buffer[400];
+  char buffer[1024];
   std::snprintf(buffer, sizeof buffer, "%.*f", static_cast<int>(n), d);
   return Value(std::strtod(buffer, nullptr));
 }

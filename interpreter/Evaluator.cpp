@@ -86,6 +86,109 @@ private:
 Evaluator::Evaluator(CommandHandler* handler, DiagnosticSink* sink, EvaluatorOptions options)
     : handler_(handler), sink_(sink), options_(options) {}
 
+void Evaluator::noteMutated(const Value& container) {
+  const void* id = container.isList()
+                       ? static_cast<const void*>(container.asList().get())
+                       : (container.isDict() ? static_cast<const void*>(container.asDict().get()) : nullptr);
+  if (id == nullptr || id == lastMutated_) {
+    return;
+  }
+  lastMutated_ = id;
+  if (container.isList()) {
+    mutatedLists_.emplace(id, container.asList());
+  } else {
+    mutatedDicts_.emplace(id, container.asDict());
+  }
+}
+
+namespace {
+
+// Does `from`'s content lead back to `target` (through lists, dicts, tuples and _F)?
+bool reaches(const Value& from, const void* target, std::unordered_set<const void*>& seen, long& budget,
+             int depth = 0) {
+  if (--budget < 0 || depth > 5000) {
+    return false;
+  }
+  const void* id = nullptr;
+  if (from.isList()) {
+    id = from.asList().get();
+  } else if (from.isDict()) {
+    id = from.asDict().get();
+  } else if (from.isTuple()) {
+    id = &from.items();
+  } else if (from.isFactor()) {
+    id = from.asFactor().get();
+  } else {
+    return false;
+  }
+  if (id == target) {
+    return true;
+  }
+  if (!seen.insert(id).second) {
+    return false;
+  }
+  if (from.isSequence()) {
+    for (const Value& v : from.items()) {
+      if (reaches(v, target, seen, budget, depth + 1)) {
+        return true;
+      }
+    }
+  } else if (from.isDict()) {
+    for (const auto& kv : from.asDict()->items) {
+      if (reaches(kv.first, target, seen, budget, depth + 1) ||
+          reaches(kv.second, target, seen, budget, depth + 1)) {
+        return true;
+      }
+    }
+  } else {
+    for (const auto& kw : from.asFactor()->keywords) {
+      if (reaches(*kw.value, target, seen, budget, depth + 1)) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+} // namespace
+
+Evaluator::~Evaluator() {
+  globals_.clear();
+  long budget = 50'000'000; // cycle detection is bounded (destruction must not hang)
+  std::vector<std::shared_ptr<ListObject>> cyclicLists;
+  std::vector<std::shared_ptr<DictObject>> cyclicDicts;
+  for (const auto& [id, weak] : mutatedLists_) {
+    if (auto list = weak.lock()) {
+      std::unordered_set<const void*> seen;
+      for (const Value& v : list->items) {
+        if (reaches(v, id, seen, budget)) {
+          cyclicLists.push_back(list);
+          break;
+        }
+      }
+    }
+  }
+  for (const auto& [id, weak] : mutatedDicts_) {
+    if (auto dict = weak.lock()) {
+      std::unordered_set<const void*> seen;
+      for (const auto& kv : dict->items) {
+        if (reaches(kv.second, id, seen, budget) || reaches(kv.first, id, seen, budget)) {
+          cyclicDicts.push_back(dict);
+          break;
+        }
+      }
+    }
+  }
+  for (auto& list : cyclicLists) {
+    ValueList items;
+    items.swap(list->items);
+  }
+  for (auto& dict : cyclicDicts) {
+    std::vector<std::pair<Value, Value>> items;
+    items.swap(dict->items);
+  }
+}
+
 void Evaluator::raise(const Pos& pos, const std::string& id, const std::string& message,
                       const std::string& note) const {
   Diagnostic d = Diagnostic::fatal(id, message, location(pos));
@@ -221,6 +324,7 @@ void Evaluator::execAssign(const Stmt& s) {
     value = evalCall(valueExpr, text);
     if (target.kind == ExprKind::Subscript && !text.empty()) {
       Value container = eval(*target.items[0]);
+      noteMutated(container);
       try {
         setItem(container, index, value);
       } catch (const LangError& e) {
@@ -253,6 +357,7 @@ void Evaluator::assignTo(const Expr& target, const Value& value) {
   case ExprKind::Subscript: {
     Value container = eval(*target.items[0]);
     Value index = eval(*target.items[1]);
+    noteMutated(container);
     try {
       setItem(container, index, value);
     } catch (const LangError& e) {
@@ -295,6 +400,7 @@ void Evaluator::execAugAssign(const Stmt& s) {
   if (target.kind == ExprKind::Subscript) {
     Value container = eval(*target.items[0]);
     Value index = eval(*target.items[1]);
+    noteMutated(container);
     try {
       Value current = getItem(container, index);
       Value rhs = eval(*s.exprs[1]);
@@ -307,6 +413,7 @@ void Evaluator::execAugAssign(const Stmt& s) {
   Value current = eval(target);
   Value rhs = eval(*s.exprs[1]);
   if (op == BinaryOp::Add && current.isList()) { // `l += [...]` extends the list in place
+    noteMutated(current);
     try {
       ValueList more = iterableItems(rhs, options_.limits);
       auto& items = current.asList()->items;
@@ -658,11 +765,11 @@ void Evaluator::unknownName(const Expr& e) const {
 
 Value Evaluator::evalCompare(const Expr& e) {
   Value left = eval(*e.items[0]);
-  for (std::size_t i = 0; i < e.ops.size(); ++i) {
+  for (std::size_t i = 0; i < e.compareCount(); ++i) {
     Value right = eval(*e.items[i + 1]);
     bool ok = false;
     try {
-      ok = compareOperation(e.ops[i], left, right);
+      ok = compareOperation(e.compareOp(i), left, right);
     } catch (const LangError& err) {
       raise(e.items[i + 1]->pos.line == e.pos.line ? e.pos : e.items[i + 1]->pos, err);
     }

@@ -31,6 +31,13 @@ struct EvaluatorOptions {
 class Evaluator {
 public:
   Evaluator(CommandHandler* handler, DiagnosticSink* sink, EvaluatorOptions options);
+  // Empties the lists and dicts that (still) contain themselves, directly or not: reference
+  // cycles made by the command file (`L.append(L)`) would otherwise never be freed.
+  ~Evaluator();
+  Evaluator(const Evaluator&) = delete;
+  Evaluator& operator=(const Evaluator&) = delete;
+  // Records a list or dict changed in place (the only way a cycle can form).
+  void noteMutated(const Value& container);
 
   // Runs the statements of a parsed module (throws UserError, FinishSignal).
   void execModule(const std::shared_ptr<const Module>& module, std::size_t firstStatement = 0);
@@ -115,6 +122,9 @@ private:
   int evalDepth_ = 0;
   long long steps_ = 0;
   const std::function<std::optional<Value>(const std::string&)>* lookup_ = nullptr;
+  std::unordered_map<const void*, std::weak_ptr<ListObject>> mutatedLists_;
+  std::unordered_map<const void*, std::weak_ptr<DictObject>> mutatedDicts_;
+  const void* lastMutated_ = nullptr;
 };
 
 // Python's built-ins (range, len, print, _F...) and the math module.

@@ -192,8 +192,9 @@ std::string exprText(const Expr& e, int minLevel, bool bareTuple) {
   }
   case ExprKind::Compare:
     out = exprText(*e.items[0], CompareLevel + 1);
-    for (std::size_t i = 0; i < e.ops.size(); ++i) {
-      out += std::string(" ") + compareOpText(e.ops[i]) + " " + exprText(*e.items[i + 1], CompareLevel + 1);
+    for (std::size_t i = 0; i < e.compareCount(); ++i) {
+      out += std::string(" ") + compareOpText(e.compareOp(i)) + " " +
+             exprText(*e.items[i + 1], CompareLevel + 1);
     }
     break;
   case ExprKind::And:

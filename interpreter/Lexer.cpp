@@ -691,9 +691,10 @@ Token Lexer::lexString(std::size_t prefixLength, bool raw, bool fString) {
 }
 
 Token Lexer::lexOperator() {
-  std::string_view rest = src_.substr(at_);
+  std::string_view rest = src_.substr(at_, 3);
+  char first = rest[0];
   for (const auto& op : operatorTable) {
-    if (rest.substr(0, op.text.size()) == op.text) {
+    if (op.text[0] == first && rest.substr(0, op.text.size()) == op.text) {
       std::size_t begin = at_;
       at_ += op.text.size();
       Token t = makeToken(op.kind, begin, at_);

@@ -328,6 +328,7 @@ std::size_t indexOf(const ValueList& items, const Value& x, const char* type) {
 Value listMethod(Evaluator& ev, const Value& self, const std::string& name, const CallArguments& a,
                  const Pos& at) {
   auto& items = self.asList()->items;
+  ev.noteMutated(self);
   const auto maxLength = static_cast<std::size_t>(ev.options().limits.maxSequenceLength);
   if (name != "sort") {
     noKeywords(a, name);
@@ -404,8 +405,9 @@ Value listMethod(Evaluator& ev, const Value& self, const std::string& name, cons
   return Value();
 }
 
-Value dictMethod(const Value& self, const std::string& name, const CallArguments& a) {
+Value dictMethod(Evaluator& ev, const Value& self, const std::string& name, const CallArguments& a) {
   auto& dict = *self.asDict();
+  ev.noteMutated(self);
   noKeywords(a, name);
   if (name == "keys" || name == "values" || name == "items") {
     arity(a, name, 0, 0);
@@ -492,7 +494,7 @@ std::optional<Value> callMethod(Evaluator& ev, const Value& object, const std::s
       return listMethod(ev, object, name, args, at);
     }
     if (object.isDict()) {
-      return dictMethod(object, name, args);
+      return dictMethod(ev, object, name, args);
     }
     if (object.isTuple()) {
       noKeywords(args, name);

@@ -447,10 +447,20 @@ bool compareOperation(CompareOp op, const Value& a, const Value& b) {
 }
 
 std::int64_t RangeObject::size() const {
-  if (step > 0) {
-    return stop > start ? (stop - start - 1) / step + 1 : 0;
+  // in unsigned arithmetic: stop - start may not fit in 64 signed bits
+  std::uint64_t n = 0;
+  if (step > 0 && stop > start) {
+    n = (static_cast<std::uint64_t>(stop) - static_cast<std::uint64_t>(start) - 1) /
+            static_cast<std::uint64_t>(step) +
+        1;
+  } else if (step < 0 && start > stop) {
+    n = (static_cast<std::uint64_t>(start) - static_cast<std::uint64_t>(stop) - 1) /
+            (static_cast<std::uint64_t>(-(step + 1)) + 1) +
+        1;
   }
-  return start > stop ? (start - stop - 1) / (-step) + 1 : 0;
+  return n > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())
+             ? std::numeric_limits<std::int64_t>::max()
+             : static_cast<std::int64_t>(n);
 }
 
 const RangeObject* asRange(const Value& v) {

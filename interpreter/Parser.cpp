@@ -14,7 +14,10 @@ struct ParseError {};
 
 class Parser {
 public:
-  Parser(Lexer& lexer, int depth) : lexer_(lexer), depth_(depth) { advance(); }
+  Parser(Lexer& lexer, int depth, std::pmr::memory_resource* arena)
+      : lexer_(lexer), arena_(arena), depth_(depth) {
+    advance();
+  }
 
   std::vector<StmtPtr> parseFileInput();
   ExprPtr parseStandaloneExpression();
@@ -82,7 +85,10 @@ private:
     Nest& operator=(const Nest&) = delete;
   };
 
-  ExprPtr node(ExprKind kind, Pos pos) { return std::make_unique<Expr>(kind, pos); }
+  ExprPtr node(ExprKind kind, Pos pos) {
+    void* memory = arena_->allocate(sizeof(Expr), alignof(Expr));
+    return ExprPtr(new (memory) Expr(kind, pos, arena_));
+  }
   ExprPtr finish(ExprPtr e);
 
   // --- statements ---
@@ -114,6 +120,7 @@ private:
   ExprPtr parsePrimary();
   ExprPtr parseAtom();
   ExprPtr parseStrings();
+  ExprPtr joinStrings(Pos pos, std::vector<Token> parts);
   void parseFStringInto(const Token& t, Expr& out);
   ExprPtr parseParenthesized(Pos open);
   ExprPtr parseListDisplay(Pos open);
@@ -125,6 +132,7 @@ private:
   ExprPtr parseTargetList();
 
   Lexer& lexer_;
+  std::pmr::memory_resource* arena_;
   Token cur_;
   int prevEndLine_ = 0;
   int depth_ = 0;
@@ -604,7 +612,9 @@ ExprPtr Parser::parseTargetList() {
     return std::move(items.front());
   }
   ExprPtr e = node(ExprKind::Tuple, pos);
-  e->items = std::move(items);
+  for (auto& item : items) {
+    e->items.push_back(std::move(item));
+  }
   return finish(std::move(e));
 }
 
@@ -765,7 +775,7 @@ ExprPtr Parser::parseComparison() {
       e = node(ExprKind::Compare, pos);
       e->items.push_back(std::move(first));
     }
-    e->ops.push_back(op);
+    e->addCompareOp(op);
     e->items.push_back(parseBinary(0));
   }
 }
@@ -897,8 +907,8 @@ ExprPtr Parser::parseCall(ExprPtr callee) {
   Pos open = cur_.pos;
   advance();
   ExprPtr call = node(ExprKind::Call, callee->pos);
+  call->items.reserve(4);
   call->items.push_back(std::move(callee));
-  std::set<std::string> keywords;
   bool sawKeyword = false;
   while (!at(TokenKind::RParen)) {
     Pos pos = cur_.pos;
@@ -919,7 +929,10 @@ ExprPtr Parser::parseCall(ExprPtr callee) {
                "did you mean '==' (comparison) instead of '='?");
         }
         advance();
-        if (!keywords.insert(value->text).second) {
+        bool repeated = std::any_of(call->items.begin() + 1, call->items.end(), [&](const ExprPtr& a) {
+          return a->kind == ExprKind::Keyword && a->text == value->text;
+        });
+        if (repeated) {
           failAt(
               value->pos, "keyword argument '" + value->text + "' repeated", "SYNTAX_14",
               "give each keyword once; for several occurrences of a factor keyword use a tuple of _F(...)");
@@ -1164,8 +1177,26 @@ ExprPtr Parser::parseComprehension(ExprPtr element, Pos pos) {
 // STRING+ : adjacent literals are joined; an f-string makes the result an FString.
 ExprPtr Parser::parseStrings() {
   Pos pos = cur_.pos;
-  std::vector<Token> parts;
+  if (!cur_.fString) { // one plain literal: the common case, without a token list
+    Token t = std::move(cur_);
+    advance();
+    if (!at(TokenKind::String)) {
+      ExprPtr e = node(ExprKind::String, pos);
+      e->text = std::move(t.value);
+      return e;
+    }
+    std::vector<Token> parts;
+    parts.push_back(std::move(t));
+    return joinStrings(pos, std::move(parts));
+  }
+  return joinStrings(pos, {});
+}
+
+ExprPtr Parser::joinStrings(Pos pos, std::vector<Token> parts) {
   bool anyF = false;
+  for (const auto& t : parts) {
+    anyF = anyF || t.fString;
+  }
   while (at(TokenKind::String)) {
     anyF = anyF || cur_.fString;
     parts.push_back(std::move(cur_));
@@ -1296,7 +1327,7 @@ void Parser::parseFStringInto(const Token& t, Expr& out) {
     }
     ExprPtr fv = node(ExprKind::FormattedValue, open);
     Lexer sub(lexer_.file(), exprText, exprLine, exprCol);
-    Parser subParser(sub, depth_ + 1);
+    Parser subParser(sub, depth_ + 1, arena_);
     ExprPtr value;
     try {
       value = subParser.parseStandaloneExpression();
@@ -1373,9 +1404,9 @@ ParseResult parseFile(const std::shared_ptr<const SourceFile>& file, bool keepCo
   if (keepComments) {
     lexer.keepComments(&result.comments);
   }
-  Parser parser(lexer, 0);
   result.module = std::make_shared<Module>();
   result.module->file = file;
+  Parser parser(lexer, 0, result.module->arena.get());
   result.module->body = parser.parseFileInput();
   result.errors = std::move(lexer.errors());
   for (auto& d : parser.errors()) {
@@ -1391,7 +1422,7 @@ ParseResult parseExpressionFile(const std::shared_ptr<const SourceFile>& file) {
   result.module = std::make_shared<Module>();
   result.module->file = file;
   try {
-    Parser parser(lexer, 0);
+    Parser parser(lexer, 0, result.module->arena.get());
     try {
       ExprPtr e = parser.parseStandaloneExpression();
       auto s = std::make_unique<Stmt>(StmtKind::Expr, e->pos);

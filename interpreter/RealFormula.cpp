@@ -463,16 +463,16 @@ private:
     case ExprKind::Compare: {
       // a < b < c  ==  (a < b) and (b < c)
       std::vector<std::size_t> exits;
-      for (std::size_t i = 0; i < e.ops.size(); ++i) {
+      for (std::size_t i = 0; i < e.compareCount(); ++i) {
         static const Op ops[] = {Op::Lt, Op::Gt, Op::Le, Op::Ge, Op::Eq, Op::Ne};
-        auto c = static_cast<int>(e.ops[i]);
+        auto c = static_cast<int>(e.compareOp(i));
         if (c > static_cast<int>(CompareOp::Ne)) {
-          fail(e, std::string("'") + compareOpText(e.ops[i]) + "' is not a real comparison");
+          fail(e, std::string("'") + compareOpText(e.compareOp(i)) + "' is not a real comparison");
         }
         expr(*e.items[i]);
         expr(*e.items[i + 1]);
         emit(Instr{ops[c]}, e.pos, -1);
-        if (i + 1 < e.ops.size()) {
+        if (i + 1 < e.compareCount()) {
           exits.push_back(jump(Op::JumpIfFalseKeep, e.pos, -1));
         }
       }

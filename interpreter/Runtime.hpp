@@ -39,7 +39,11 @@ public:
       : start(first), stop(end), step(increment) {}
   std::string typeName() const override { return "range"; }
   std::int64_t size() const;
-  std::int64_t at(std::int64_t i) const { return start + i * step; }
+  // start + i * step, computed without signed overflow (the result is in range by construction)
+  std::int64_t at(std::int64_t i) const {
+    return static_cast<std::int64_t>(static_cast<std::uint64_t>(start) +
+                                     static_cast<std::uint64_t>(i) * static_cast<std::uint64_t>(step));
+  }
   std::int64_t start;
   std::int64_t stop;
   std::int64_t step;

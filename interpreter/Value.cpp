@@ -130,6 +130,10 @@ std::string reprSequence(const ValueList& items, const char* open, const char* c
 
 std::string reprOf(const Value& v, Visiting& visiting) {
   using K = Value::Kind;
+  constexpr std::size_t maxDepth = 100; // deeper containers print as ... (and cannot exhaust the stack)
+  if (visiting.size() > maxDepth && (v.isSequence() || v.isDict() || v.isFactor())) {
+    return "...";
+  }
   switch (v.kind()) {
   case K::None:
     return "None";
@@ -145,8 +149,12 @@ std::string reprOf(const Value& v, Visiting& visiting) {
   }
   case K::String:
     return quote(v.asString());
-  case K::Tuple:
-    return reprSequence(v.items(), "(", ")", true, visiting);
+  case K::Tuple: {
+    visiting.push_back(nullptr); // depth marker (tuples cannot contain themselves)
+    std::string out = reprSequence(v.items(), "(", ")", true, visiting);
+    visiting.pop_back();
+    return out;
+  }
   case K::List: {
     const void* id = v.asList().get();
     if (std::find(visiting.begin(), visiting.end(), id) != visiting.end()) {
@@ -176,6 +184,7 @@ std::string reprOf(const Value& v, Visiting& visiting) {
     return out + "}";
   }
   case K::Factor: {
+    visiting.push_back(nullptr);
     std::string out = "_F(";
     bool first = true;
     for (const auto& kw : v.asFactor()->keywords) {
@@ -185,6 +194,7 @@ std::string reprOf(const Value& v, Visiting& visiting) {
       first = false;
       out += kw.name + "=" + (kw.value ? reprOf(*kw.value, visiting) : "None");
     }
+    visiting.pop_back();
     return out + ")";
   }
   case K::Concept:
@@ -216,10 +226,11 @@ bool dictsEqual(const DictObject& a, const DictObject& b, int depth) {
   if (a.items.size() != b.items.size()) {
     return false;
   }
-  for (const auto& [key, value] : a.items) {
+  for (const auto& entry : a.items) {
+    const Value& key = entry.first;
     auto it = std::find_if(b.items.begin(), b.items.end(),
-                           [&](const auto& entry) { return equalsAt(entry.first, key, depth + 1); });
-    if (it == b.items.end() || !equalsAt(it->second, value, depth + 1)) {
+                           [&](const auto& other) { return equalsAt(other.first, key, depth + 1); });
+    if (it == b.items.end() || !equalsAt(it->second, entry.second, depth + 1)) {
       return false;
     }
   }
