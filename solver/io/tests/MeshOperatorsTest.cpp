@@ -1,0 +1,111 @@
+// The mesh commands from command files, run by the batch runner: LIRE_MAILLAGE in the three
+// formats with VERI_MAIL alarms, DEFI_GROUP, MODI_MAILLAGE, CREA_MAILLAGE, MACR_INFO_MAIL and
+// IMPR_RESU of a mesh, checked through the message file and the files written.
+
+#include "solver/io/MeshIO.hpp"
+#include "solver/io/tests/MeshTestUtil.hpp"
+#include "solver/job/BatchJob.hpp"
+#include "solver/mesh/StructuredMesher.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace stella {
+namespace {
+
+struct CommRun {
+  JobDiagnostic diagnostic;
+  std::string message;
+};
+
+CommRun runComm(const std::filesystem::path& dir, const std::string& name, const std::string& comm,
+                const std::map<int, std::filesystem::path>& units) {
+  const auto file = dir / (name + ".comm");
+  std::ofstream(file) << comm;
+  RunOptions options;
+  options.echo = false;
+  options.workDirectory = dir / (name + ".work");
+  const JobResult r = runCommandFile(file, units, options);
+  std::ifstream in(dir / (name + ".mess"));
+  std::stringstream s;
+  s << in.rdbuf();
+  return {r.diagnostic, s.str()};
+}
+
+TEST(MeshOperators, LireMaillageInEveryFormat) {
+  const auto dir = testing::tempDir("lire");
+  Mesh m = buildStructuredMesh({CellType::HEXA8, {2, 2, 2}, {1, 1, 1}, {0, 0, 0}});
+  m.setName("BLOC");
+  writeMedMesh(dir / "m.med", m);
+  writeAsterMesh(dir / "m.mail", m);
+  writeGmshMesh(dir / "m.msh", m);
+  const CommRun r = runComm(dir, "lire",
+                            "DEBUT()\n"
+                            "MA = LIRE_MAILLAGE(FORMAT='MED', UNITE=20, INFO=2)\n"
+                            "MB = LIRE_MAILLAGE(FORMAT='ASTER', UNITE=21)\n"
+                            "MC = LIRE_MAILLAGE(FORMAT='GMSH', UNITE=22)\n"
+                            "MD = LIRE_MAILLAGE(UNITE=20, NOM_MED='BLOC')\n"
+                            "FIN()\n",
+                            {{20, dir / "m.med"}, {21, dir / "m.mail"}, {22, dir / "m.msh"}});
+  EXPECT_EQ(r.diagnostic, JobDiagnostic::Ok) << r.message;
+  EXPECT_NE(r.message.find("mesh BLOC: 3D, 27 nodes"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("mesh MB: 3D, 27 nodes"), std::string::npos);
+  EXPECT_NE(r.message.find("GROUP_MA XMAX"), std::string::npos);
+}
+
+TEST(MeshOperators, LireMaillageErrorsAndAlarms) {
+  const auto dir = testing::tempDir("lire_err");
+  Mesh m = buildStructuredMesh({CellType::QUAD4, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}});
+  m.addNode(m.point(0)); // duplicate node
+  writeMedMesh(dir / "dup.med", m, "M");
+  const CommRun alarm =
+      runComm(dir, "alarm", "DEBUT()\nMA = LIRE_MAILLAGE(UNITE=20)\nFIN()\n", {{20, dir / "dup.med"}});
+  EXPECT_EQ(alarm.diagnostic, JobDiagnostic::Alarm) << alarm.message;
+  EXPECT_NE(alarm.message.find("MESHCHECK_1"), std::string::npos) << alarm.message;
+  std::ofstream(dir / "bad.med") << "not a med file";
+  const CommRun bad =
+      runComm(dir, "bad", "DEBUT()\nMA = LIRE_MAILLAGE(UNITE=20)\nFIN()\n", {{20, dir / "bad.med"}});
+  EXPECT_NE(bad.diagnostic, JobDiagnostic::Ok);
+  EXPECT_NE(bad.message.find("MESHFILE_4"), std::string::npos) << bad.message;
+  EXPECT_NE(bad.message.find("bad.med"), std::string::npos);
+}
+
+TEST(MeshOperators, DefiGroup) {
+  const auto dir = testing::tempDir("defi_group");
+  writeMedMesh(dir / "m.med", buildStructuredMesh({CellType::HEXA8, {2, 2, 2}, {1, 1, 1}, {0, 0, 0}}), "M");
+  const CommRun r = runComm(
+      dir, "dg",
+      "DEBUT()\n"
+      "MA = LIRE_MAILLAGE(UNITE=20)\n"
+      "MA = DEFI_GROUP(reuse=MA, MAILLAGE=MA,\n"
+      "    DETR_GROUP_MA=_F(NOM='YMIN'),\n"
+      "    CREA_GROUP_MA=(_F(NOM='CUBES', TOUT='OUI', TYPE_MAILLE='3D'),\n"
+      "                   _F(NOM='SIDES', UNION=('XMIN', 'XMAX')),\n"
+      "                   _F(NOM='UP', OPTION='FACE_NORMALE', VECT_NORMALE=(0., 0., 1.)),\n"
+      "                   _F(NOM='BALL', OPTION='SPHERE', POINT=(0., 0., 0.), RAYON=0.1, "
+      "TYPE_MAILLE='3D')),\n"
+      "    CREA_GROUP_NO=(_F(GROUP_MA='UP', NOM='UPN'),\n"
+      "                   _F(NOM='MIDZ', OPTION='PLAN', POINT=(0., 0., 0.5), VECT_NORMALE=(0., 0., 1.),\n"
+      "                      PRECISION=1e-6)))\n"
+      "FIN()\n",
+      {{20, dir / "m.med"}});
+  EXPECT_EQ(r.diagnostic, JobDiagnostic::Ok) << r.message;
+  for (const char* line :
+       {"group of cells CUBES (8 cells)", "group of cells SIDES (8 cells)", "group of cells UP (4 cells)",
+        "group of cells BALL (1 cells)", "group of nodes UPN (9 nodes)", "group of nodes MIDZ (9 nodes)"}) {
+    EXPECT_NE(r.message.find(line), std::string::npos) << line << "\n" << r.message;
+  }
+  const CommRun bad =
+      runComm(dir, "dg_bad",
+              "DEBUT()\nMA = LIRE_MAILLAGE(UNITE=20)\n"
+              "MA = DEFI_GROUP(reuse=MA, MAILLAGE=MA, CREA_GROUP_MA=_F(NOM='A', UNION=('XMIN', 'NOPE')))\n"
+              "FIN()\n",
+              {{20, dir / "m.med"}});
+  EXPECT_NE(bad.message.find("DEFI_GROUP_1"), std::string::npos) << bad.message;
+  EXPECT_NE(bad.message.find("NOPE"), std::string::npos);
+}
+
+} // namespace
+} // namespace stella

@@ -1,0 +1,348 @@
+// DEFI_GROUP: creates and destroys groups of cells and nodes of a mesh, in place (reuse=MA as in
+// code_aster: models built on the mesh see the new groups). Order: DETR_GROUP_MA, DETR_GROUP_NO,
+// CREA_GROUP_MA, CREA_GROUP_NO, each occurrence in turn.
+
+#include "interpreter/Diagnostics.hpp"
+#include "solver/database/MeshConcept.hpp"
+#include "solver/mesh/GroupOperations.hpp"
+#include "solver/mesh/MeshGeometry.hpp"
+#include "solver/session/OperatorRegistry.hpp"
+#include "solver/session/Session.hpp"
+
+#include <fmt/format.h>
+
+#include <numeric>
+
+namespace stella {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& id, const std::string& message, const SourceLocation& at,
+                       const std::string& note = "") {
+  Diagnostic d = Diagnostic::fatal(id, message, at);
+  if (!note.empty()) {
+    d.withNote(note);
+  }
+  throw UserError(d);
+}
+
+std::string groupList(const std::map<std::string, std::vector<std::int32_t>>& groups) {
+  std::string s;
+  for (const auto& [g, ids] : groups) {
+    s += (s.empty() ? "" : ", ") + g;
+    if (s.size() > 300) {
+      return s + ", ...";
+    }
+  }
+  return s.empty() ? "(none)" : s;
+}
+
+std::vector<CellId> cellGroup(const Mesh& m, const std::string& g, const SourceLocation& at) {
+  const auto* v = m.cellGroup(g);
+  if (v == nullptr) {
+    fail("DEFI_GROUP_1", "the mesh has no group of cells '" + g + "'", at,
+         "groups of cells: " + groupList(m.cellGroups()));
+  }
+  return *v;
+}
+
+std::vector<NodeId> nodeGroup(const Mesh& m, const std::string& g, const SourceLocation& at) {
+  const auto* v = m.nodeGroup(g);
+  if (v == nullptr) {
+    fail("DEFI_GROUP_1", "the mesh has no group of nodes '" + g + "'", at,
+         "groups of nodes: " + groupList(m.nodeGroups()));
+  }
+  return *v;
+}
+
+std::vector<std::vector<std::int32_t>> cellGroups(const Mesh& m, const KeywordTree& occ,
+                                                  const std::string& kw) {
+  std::vector<std::vector<std::int32_t>> out;
+  for (const auto& g : occ.texts(kw)) {
+    out.push_back(cellGroup(m, g, occ.locationOf(kw)));
+  }
+  return out;
+}
+
+std::vector<std::vector<std::int32_t>> nodeGroups(const Mesh& m, const KeywordTree& occ,
+                                                  const std::string& kw) {
+  std::vector<std::vector<std::int32_t>> out;
+  for (const auto& g : occ.texts(kw)) {
+    out.push_back(nodeGroup(m, g, occ.locationOf(kw)));
+  }
+  return out;
+}
+
+Point3 vectorOf(const std::vector<double>& v) {
+  return {v.empty() ? 0.0 : v[0], v.size() < 2 ? 0.0 : v[1], v.size() < 3 ? 0.0 : v[2]};
+}
+
+// POINT, or the single node of GROUP_NO_CENTRE.
+Point3 centreOf(const Mesh& m, const KeywordTree& occ) {
+  if (occ.has("POINT")) {
+    return vectorOf(occ.reals("POINT"));
+  }
+  if (occ.has("GROUP_NO_CENTRE")) {
+    const auto nodes = nodeGroup(m, occ.text("GROUP_NO_CENTRE"), occ.locationOf("GROUP_NO_CENTRE"));
+    if (nodes.size() != 1) {
+      fail("DEFI_GROUP_3", "GROUP_NO_CENTRE must hold exactly one node", occ.locationOf("GROUP_NO_CENTRE"));
+    }
+    return m.point(nodes.front());
+  }
+  fail("DEFI_GROUP_4", "NOEUD_CENTRE is not implemented yet: give POINT or GROUP_NO_CENTRE", occ.location());
+}
+
+Point3 directionOf(const KeywordTree& occ) {
+  return occ.has("VECT_NORMALE") ? vectorOf(occ.reals("VECT_NORMALE"))
+                                 : nauticalDirection(occ.reals("ANGL_NAUT"));
+}
+
+NodeCriterion criterionOf(const std::string& c) {
+  if (c == "TOUS" || c == "TOUT") {
+    return NodeCriterion::All;
+  }
+  if (c == "MAJORITE") {
+    return NodeCriterion::Majority;
+  }
+  if (c == "SOMMET") {
+    return NodeCriterion::Vertices;
+  }
+  return NodeCriterion::AtLeastOne;
+}
+
+std::vector<CellId> optionCells(const Mesh& m, const KeywordTree& occ) {
+  const std::string option = occ.text("OPTION");
+  const auto all = allCells(m);
+  if (option == "FACE_NORMALE") {
+    return cellsFacing(m, directionOf(occ), occ.realOr("ANGL_PREC", 0.5),
+                       occ.textOr("VERI_SIGNE", "OUI") == "OUI");
+  }
+  if (option == "APPUI") {
+    const auto nodes = unionOf(nodeGroups(m, occ, "GROUP_NO"));
+    std::vector<bool> in(static_cast<std::size_t>(m.nodeCount()), false);
+    for (const NodeId n : nodes) {
+      in[static_cast<std::size_t>(n)] = true;
+    }
+    return cellsByNodes(
+        m, all, [&](NodeId n) { return in[static_cast<std::size_t>(n)]; },
+        criterionOf(occ.text("TYPE_APPUI")));
+  }
+  const Point3 centre = centreOf(m, occ);
+  const NodeCriterion crit = criterionOf(occ.textOr("CRIT_NOEUD", "AU_MOINS_UN"));
+  if (option == "SPHERE") {
+    const double r = occ.real("RAYON");
+    return cellsByNodes(
+        m, all, [&](NodeId n) { return norm(m.point(n) - centre) <= r; }, crit);
+  }
+  if (option == "CYLINDRE") {
+    const double r = occ.real("RAYON");
+    const Point3 axis = directionOf(occ);
+    return cellsByNodes(
+        m, all, [&](NodeId n) { return distanceToAxis(m.point(n), centre, axis) <= r; }, crit);
+  }
+  if (option == "BANDE") {
+    const double d = occ.real("DIST");
+    const Point3 normal = directionOf(occ);
+    return cellsByNodes(
+        m, all, [&](NodeId n) { return distanceToPlane(m.point(n), centre, normal) <= d; }, crit);
+  }
+  fail("DEFI_GROUP_4", "CREA_GROUP_MA OPTION='" + option + "' is not implemented yet",
+       occ.locationOf("OPTION"));
+}
+
+std::vector<CellId> creaGroupMaCells(const Mesh& m, const KeywordTree& occ) {
+  std::vector<CellId> cells;
+  if (occ.has("TOUT")) {
+    cells = allCells(m);
+  } else if (occ.has("GROUP_MA")) {
+    cells = cellGroup(m, occ.text("GROUP_MA"), occ.locationOf("GROUP_MA"));
+  } else if (occ.has("MAILLE")) {
+    for (const auto& n : occ.texts("MAILLE")) {
+      const auto c = m.findCell(n);
+      if (!c) {
+        fail("DEFI_GROUP_2", "the mesh has no cell named '" + n + "'", occ.locationOf("MAILLE"));
+      }
+      cells.push_back(*c);
+    }
+  } else if (occ.has("UNION")) {
+    cells = unionOf(cellGroups(m, occ, "UNION"));
+  } else if (occ.has("INTERSEC")) {
+    cells = intersectionOf(cellGroups(m, occ, "INTERSEC"));
+  } else if (occ.has("DIFFE")) {
+    cells = differenceOf(cellGroups(m, occ, "DIFFE"));
+  } else if (occ.has("OPTION")) {
+    cells = optionCells(m, occ);
+  }
+  return filterCellType(m, cells, occ.textOr("TYPE_MAILLE", "TOUT"));
+}
+
+void creaGroupNo(Mesh& m, const KeywordTree& occ, std::vector<std::string>& made) {
+  const auto setGroup = [&](const std::string& name, std::vector<NodeId> nodes, bool ordered) {
+    if (ordered) {
+      m.setOrderedNodeGroup(name, std::move(nodes));
+    } else {
+      m.setNodeGroup(name, std::move(nodes));
+    }
+    made.push_back(name);
+  };
+  if (!occ.has("OPTION")) {
+    if (occ.has("TOUT_GROUP_MA")) {
+      const auto groups = m.cellGroups();
+      for (const auto& [g, cells] : groups) {
+        setGroup(g, nodesOfCells(m, cells, occ.textOr("CRIT_NOEUD", "TOUS")), false);
+      }
+      return;
+    }
+    if (occ.has("GROUP_MA")) {
+      const auto groups = occ.texts("GROUP_MA");
+      const auto names = occ.has("NOM") ? occ.texts("NOM") : groups;
+      if (names.size() != groups.size()) {
+        fail("DEFI_GROUP_3", "NOM must give one name per group of GROUP_MA", occ.locationOf("NOM"));
+      }
+      for (std::size_t i = 0; i < groups.size(); ++i) {
+        setGroup(names[i],
+                 nodesOfCells(m, cellGroup(m, groups[i], occ.locationOf("GROUP_MA")),
+                              occ.textOr("CRIT_NOEUD", "TOUS")),
+                 false);
+      }
+      return;
+    }
+    std::vector<NodeId> nodes;
+    if (occ.has("GROUP_NO")) {
+      nodes = unionOf(nodeGroups(m, occ, "GROUP_NO"));
+    } else if (occ.has("NOEUD")) {
+      for (const auto& n : occ.texts("NOEUD")) {
+        const auto id = m.findNode(n);
+        if (!id) {
+          fail("DEFI_GROUP_2", "the mesh has no node named '" + n + "'", occ.locationOf("NOEUD"));
+        }
+        nodes.push_back(*id);
+      }
+      setGroup(occ.text("NOM"), nodes, true); // NOEUD keeps the user's order
+      return;
+    } else if (occ.has("UNION")) {
+      nodes = unionOf(nodeGroups(m, occ, "UNION"));
+    } else if (occ.has("INTERSEC")) {
+      nodes = intersectionOf(nodeGroups(m, occ, "INTERSEC"));
+    } else if (occ.has("DIFFE")) {
+      nodes = differenceOf(nodeGroups(m, occ, "DIFFE"));
+    }
+    setGroup(occ.text("NOM"), nodes, false);
+    return;
+  }
+  const std::string option = occ.text("OPTION");
+  const std::string name = occ.text("NOM");
+  const double precision = occ.realOr("PRECISION", 0.0);
+  if (option == "ENV_SPHERE") {
+    const Point3 c = centreOf(m, occ);
+    const double r = occ.real("RAYON");
+    setGroup(name, nodesWhere(m, [&](const Point3& x) { return std::abs(norm(x - c) - r) <= precision; }),
+             false);
+  } else if (option == "ENV_CYLINDRE") {
+    const Point3 c = centreOf(m, occ);
+    const Point3 axis = directionOf(occ);
+    const double r = occ.real("RAYON");
+    setGroup(
+        name,
+        nodesWhere(m, [&](const Point3& x) { return std::abs(distanceToAxis(x, c, axis) - r) <= precision; }),
+        false);
+  } else if (option == "PLAN") {
+    const Point3 c = centreOf(m, occ);
+    const Point3 normal = directionOf(occ);
+    setGroup(name, nodesWhere(m, [&](const Point3& x) { return distanceToPlane(x, c, normal) <= precision; }),
+             false);
+  } else if (option == "NOEUD_ORDO") {
+    const auto cells = unionOf(cellGroups(m, occ, "GROUP_MA"));
+    const auto single = [&](const char* kw) -> std::optional<NodeId> {
+      if (!occ.has(kw)) {
+        return std::nullopt;
+      }
+      const auto nodes = nodeGroup(m, occ.text(kw), occ.locationOf(kw));
+      if (nodes.size() != 1) {
+        fail("DEFI_GROUP_3", std::string(kw) + " must hold exactly one node", occ.locationOf(kw));
+      }
+      return nodes.front();
+    };
+    setGroup(name, orderedChainNodes(m, cells, single("GROUP_NO_ORIG"), single("GROUP_NO_EXTR")), true);
+  } else if (option == "SEGM_DROI_ORDO") {
+    const auto a = nodeGroup(m, occ.text("GROUP_NO_ORIG"), occ.locationOf("GROUP_NO_ORIG"));
+    const auto b = nodeGroup(m, occ.text("GROUP_NO_EXTR"), occ.locationOf("GROUP_NO_EXTR"));
+    if (a.size() != 1 || b.size() != 1) {
+      fail("DEFI_GROUP_3", "GROUP_NO_ORIG and GROUP_NO_EXTR must hold exactly one node each", occ.location());
+    }
+    std::vector<NodeId> candidates;
+    if (occ.has("GROUP_NO")) {
+      candidates = unionOf(nodeGroups(m, occ, "GROUP_NO"));
+    } else {
+      candidates.resize(static_cast<std::size_t>(m.nodeCount()));
+      std::iota(candidates.begin(), candidates.end(), 0);
+    }
+    setGroup(name,
+             nodesOnSegment(m, candidates, a.front(), b.front(), precision, occ.text("CRITERE") == "RELATIF"),
+             true);
+  } else {
+    fail("DEFI_GROUP_4", "CREA_GROUP_NO OPTION='" + option + "' is not implemented yet",
+         occ.locationOf("OPTION"));
+  }
+}
+
+Value runDefiGroup(OperatorCall& call) {
+  const KeywordTree& kw = call.keywords;
+  if (!kw.has("MAILLAGE")) {
+    fail("DEFI_GROUP_4", "DEFI_GROUP on a GRILLE is not implemented yet", call.location);
+  }
+  auto data = conceptData<MeshConcept>(kw.conceptValue("MAILLAGE"));
+  STELLA_ASSERT(data != nullptr && data->mesh != nullptr, "MAILLAGE holds no mesh");
+  Mesh& m = *data->mesh;
+  const bool alarm = kw.textOr("ALARME", "OUI") == "OUI";
+  for (const auto& occ : kw.occurrences("DETR_GROUP_MA")) {
+    for (const auto& g : occ.texts("NOM")) {
+      if (!m.removeCellGroup(g) && alarm) {
+        call.session.report(Diagnostic::alarm("DEFI_GROUP_6", "DETR_GROUP_MA: no group of cells '" + g + "'",
+                                              occ.locationOf("NOM")));
+      }
+    }
+  }
+  for (const auto& occ : kw.occurrences("DETR_GROUP_NO")) {
+    for (const auto& g : occ.texts("NOM")) {
+      if (!m.removeNodeGroup(g) && alarm) {
+        call.session.report(Diagnostic::alarm("DEFI_GROUP_6", "DETR_GROUP_NO: no group of nodes '" + g + "'",
+                                              occ.locationOf("NOM")));
+      }
+    }
+  }
+  for (const auto& occ : kw.occurrences("CREA_GROUP_MA")) {
+    const std::string name = occ.text("NOM");
+    if (m.hasCellGroup(name)) {
+      fail("DEFI_GROUP_7", "a group of cells '" + name + "' already exists", occ.locationOf("NOM"),
+           "destroy it first with DETR_GROUP_MA or choose another name");
+    }
+    auto cells = creaGroupMaCells(m, occ);
+    if (cells.empty() && alarm) {
+      call.session.report(
+          Diagnostic::alarm("DEFI_GROUP_8", "the group of cells '" + name + "' is empty", occ.location()));
+    }
+    call.session.message() << fmt::format("   DEFI_GROUP: group of cells {} ({} cells)\n", name,
+                                          cells.size());
+    m.setCellGroup(name, std::move(cells));
+  }
+  for (const auto& occ : kw.occurrences("CREA_GROUP_NO")) {
+    std::vector<std::string> made;
+    creaGroupNo(m, occ, made);
+    for (const auto& g : made) {
+      const std::size_t n = m.nodeGroup(g)->size();
+      if (n == 0 && alarm) {
+        call.session.report(
+            Diagnostic::alarm("DEFI_GROUP_8", "the group of nodes '" + g + "' is empty", occ.location()));
+      }
+      call.session.message() << fmt::format("   DEFI_GROUP: group of nodes {} ({} nodes)\n", g, n);
+    }
+  }
+  return call.makeConcept(data);
+}
+
+} // namespace
+
+STELLA_OPERATOR("DEFI_GROUP", runDefiGroup);
+
+} // namespace stella

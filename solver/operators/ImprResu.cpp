@@ -1,0 +1,155 @@
+// IMPR_RESU: writes meshes and results. FORMAT='MED' (unit 80; successive calls on one unit add
+// to the file), 'RESULTAT' (text tables, unit 8 = the result file), 'GMSH' (unit 37) and 'VTU'
+// (stella's extension: the unit's file is a .pvd collection with one .vtu per step beside it).
+// RESU occurrences: MAILLAGE alone, or RESULTAT with NOM_CHAM, NUME_ORDRE / INST / TOUT_ORDRE
+// and NOM_CMP selections. Gauss points get the coordinates of the code_aster RIGI family.
+
+#include "solver/database/Result.hpp"
+#include "solver/fem/Quadrature.hpp"
+#include "solver/io/ResultWriters.hpp"
+#include "solver/operators/MeshOperatorUtil.hpp"
+#include "solver/session/Session.hpp"
+
+#include <cmath>
+#include <fstream>
+
+namespace stella {
+
+namespace {
+
+std::vector<Point3> rigiPoints(CellType t, int count) {
+  for (const auto role : {fem::IntegrationRole::Volume, fem::IntegrationRole::Skin}) {
+    try {
+      const auto& rule = fem::rigiRule(t, role);
+      if (rule.size() == count) {
+        std::vector<Point3> p;
+        for (const auto& x : rule.points) {
+          p.push_back({x[0], x[1], x[2]});
+        }
+        return p;
+      }
+    } catch (const std::exception&) {
+      // No rule of this role for this type: try the next one.
+    }
+  }
+  return {};
+}
+
+std::vector<int> selectedSteps(const Result& r, const KeywordTree& occ) {
+  std::vector<int> numbers;
+  if (occ.has("NUME_ORDRE")) {
+    for (const auto n : occ.integers("NUME_ORDRE")) {
+      if (r.stepNumber(static_cast<int>(n)) == nullptr) {
+        throw UserError(Diagnostic::fatal("IMPR_RESU_2", "the result has no NUME_ORDRE " + std::to_string(n),
+                                          occ.locationOf("NUME_ORDRE")));
+      }
+      numbers.push_back(static_cast<int>(n));
+    }
+  }
+  if (occ.has("INST")) {
+    const bool absolute = occ.textOr("CRITERE", "RELATIF") == "ABSOLU";
+    const double precision = occ.realOr("PRECISION", 1e-6);
+    for (const double t : occ.reals("INST")) {
+      const ResultStep* s = r.stepAtTime(t, precision, absolute);
+      if (s == nullptr) {
+        throw UserError(Diagnostic::fatal(
+            "IMPR_RESU_2", "the result has no step at INST " + std::to_string(t), occ.locationOf("INST")));
+      }
+      numbers.push_back(s->number);
+    }
+  }
+  return numbers;
+}
+
+struct Target {
+  std::filesystem::path path;
+  std::string format;
+};
+
+void writeOccurrence(OperatorCall& call, const Target& target, const KeywordTree& occ, bool& fileStarted) {
+  std::shared_ptr<const Mesh> mesh;
+  std::shared_ptr<Result> result;
+  std::string resultName = "RESU";
+  if (occ.has("CHAM_GD")) {
+    throw UserError(Diagnostic::fatal("IMPR_RESU_1", "IMPR_RESU of a CHAM_GD is not implemented yet",
+                                      occ.locationOf("CHAM_GD")));
+  }
+  if (occ.has("RESULTAT")) {
+    const auto c = occ.conceptValue("RESULTAT");
+    result = conceptData<Result>(c);
+    STELLA_ASSERT(result != nullptr, "RESULTAT holds no result");
+    mesh = result->mesh;
+    resultName = c->name;
+  }
+  if (occ.has("MAILLAGE")) {
+    mesh = meshConceptOf(occ)->mesh;
+  }
+  STELLA_ASSERT(mesh != nullptr, "IMPR_RESU without a mesh");
+  ResultOutput out;
+  out.resultName = occ.textOr("NOM_RESU_MED", resultName);
+  if (occ.has("NOM_CHAM")) {
+    out.fields = occ.texts("NOM_CHAM");
+  }
+  if (occ.has("NOM_CMP")) {
+    out.components = occ.texts("NOM_CMP");
+  }
+  if (result) {
+    out.steps = selectedSteps(*result, occ);
+    const auto known = result->fieldNames();
+    for (const auto& f : out.fields) {
+      if (std::find(known.begin(), known.end(), f) == known.end()) {
+        call.session.report(Diagnostic::alarm(
+            "IMPR_RESU_3", "the result " + resultName + " has no field " + f, occ.locationOf("NOM_CHAM")));
+      }
+    }
+  }
+  out.gaussPoints = rigiPoints;
+  const Result* r = result.get();
+  if (target.format == "MED") {
+    writeMedResult(target.path, *mesh, mesh->name(), r, out, fileStarted);
+  } else if (target.format == "VTU") {
+    writeVtuResult(target.path, *mesh, r, out);
+  } else if (target.format == "GMSH") {
+    writeGmshResult(target.path, *mesh, r, out);
+  } else if (target.format == "RESULTAT") {
+    const std::string text = r != nullptr ? formatResultTables(*mesh, *r, out) : std::string();
+    if (target.path.empty()) {
+      call.session.result() << text;
+    } else {
+      std::ofstream f(target.path, std::ios::app);
+      f << text;
+    }
+  }
+  fileStarted = true;
+}
+
+Value runImprResu(OperatorCall& call) {
+  const KeywordTree& kw = call.keywords;
+  Target target{{}, kw.text("FORMAT")};
+  if (target.format == "IDEAS" || target.format == "ASTER") {
+    throw UserError(Diagnostic::fatal("IMPR_RESU_1",
+                                      "IMPR_RESU FORMAT='" + target.format + "' is not implemented yet",
+                                      kw.locationOf("FORMAT"))
+                        .withNote("use FORMAT='MED', 'RESULTAT', 'GMSH' or 'VTU'"));
+  }
+  const int defaultUnit = target.format == "MED"    ? 80
+                          : target.format == "GMSH" ? 37
+                          : target.format == "VTU"  ? 81
+                                                    : 8;
+  const int unit = static_cast<int>(kw.integerOr("UNITE", defaultUnit));
+  if (!(target.format == "RESULTAT" && unit == 8)) {
+    target.path = call.session.unitPath(unit, kw.locationOf("UNITE"), false);
+  }
+  std::error_code ec;
+  bool started = target.format == "MED" && std::filesystem::file_size(target.path, ec) > 0 && !ec;
+  for (const auto& occ : kw.occurrences("RESU")) {
+    writeOccurrence(call, target, occ, started);
+  }
+  return Value();
+}
+
+} // namespace
+
+STELLA_OPERATOR("IMPR_RESU", runImprResu);
+
+} // namespace stella

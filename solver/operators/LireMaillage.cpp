@@ -1,0 +1,70 @@
+// LIRE_MAILLAGE: reads the mesh of a logical unit (default 20) in FORMAT MED (NOM_MED selects
+// one mesh of the file), ASTER or GMSH, runs the VERI_MAIL checks (alarms) and prints a summary.
+
+#include "interpreter/Diagnostics.hpp"
+#include "solver/database/MeshConcept.hpp"
+#include "solver/io/MeshIO.hpp"
+#include "solver/mesh/MeshCheck.hpp"
+#include "solver/mesh/MeshSummary.hpp"
+#include "solver/session/OperatorRegistry.hpp"
+#include "solver/session/Session.hpp"
+
+namespace stella {
+
+namespace {
+
+MeshFormat formatOf(const KeywordTree& kw) {
+  const std::string f = kw.text("FORMAT");
+  if (f == "MED") {
+    return MeshFormat::Med;
+  }
+  if (f == "ASTER") {
+    return MeshFormat::Aster;
+  }
+  if (f == "GMSH") {
+    return MeshFormat::Gmsh;
+  }
+  throw UserError(Diagnostic::fatal("LIRE_MAILLAGE_1", "FORMAT='" + f + "' is not implemented yet",
+                                    kw.locationOf("FORMAT"))
+                      .withNote("convert the mesh to MED, ASTER or GMSH"));
+}
+
+Value runLireMaillage(OperatorCall& call) {
+  const KeywordTree& kw = call.keywords;
+  const MeshFormat format = formatOf(kw);
+  const auto path =
+      call.session.unitPath(static_cast<int>(kw.integer("UNITE")), kw.locationOf("UNITE"), true);
+  auto mesh = std::make_shared<Mesh>();
+  try {
+    *mesh = readMesh(path, format, kw.textOr("NOM_MED", ""));
+  } catch (const UserError& e) {
+    std::vector<Diagnostic> ds = e.diagnostics();
+    for (auto& d : ds) {
+      if (!d.location.known()) {
+        d.location = call.location;
+      }
+    }
+    throw UserError(ds);
+  }
+  if (mesh->name().empty() || format != MeshFormat::Med) {
+    mesh->setName(call.resultName);
+  }
+  const auto& veri = kw.occurrences("VERI_MAIL");
+  if (!veri.empty() && veri.front().textOr("VERIF", "OUI") == "OUI") {
+    const auto report = checkMesh(*mesh, veri.front().realOr("APLAT", 1e-3));
+    for (auto d : meshCheckDiagnostics(*mesh, report)) {
+      d.location = call.location;
+      call.session.report(d);
+    }
+  }
+  if (kw.integerOr("INFO", 1) >= 1) {
+    call.session.message() << meshSummary(*mesh, call.resultName, kw.integerOr("INFO", 1) >= 2);
+  }
+  return call.makeConcept(std::make_shared<MeshConcept>(mesh));
+}
+
+} // namespace
+
+STELLA_OPERATOR("LIRE_MAILLAGE", runLireMaillage);
+
+} // namespace stella
