@@ -169,13 +169,22 @@ std::string KeywordTree::format(int indent) const {
     out << pad << k.name << '=' << formatValues(k.values) << ",\n";
   }
   for (const auto& f : factors_) {
+    // One occurrence: K=_F(...); several: K=(_F(...), _F(...)), as a user would write them.
+    const bool several = f.occurrences.size() > 1;
+    const std::string inner = several ? pad + "    " : pad;
+    if (several) {
+      out << pad << f.name << "=(\n";
+    }
     for (const auto& occ : f.occurrences) {
-      std::string inner = occ.format(indent + 4);
-      if (inner.empty()) {
-        out << pad << f.name << "=_F(),\n";
-      } else {
-        out << pad << f.name << "=_F(\n" << inner << pad << "),\n";
+      std::string keywords = occ.format(static_cast<int>(inner.size()) + 4);
+      out << inner << (several ? "" : f.name + "=") << "_F(";
+      if (!keywords.empty()) {
+        out << "\n" << keywords << inner;
       }
+      out << "),\n";
+    }
+    if (several) {
+      out << pad << "),\n";
     }
   }
   return out.str();

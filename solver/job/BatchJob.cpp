@@ -35,6 +35,7 @@ struct JobSpec {
   bool isTestcase = false;
   std::vector<std::string> expectedDiagnostics;
   bool saveBase = false;
+  bool resultsOptional = false; // quick runs: say nothing of result units the study did not write
 };
 
 constexpr const char* workMarker = ".stella-work";
@@ -119,6 +120,9 @@ std::vector<fs::path> copyResults(const JobSpec& spec, const fs::path& work, std
     }
     fs::path produced = work / ("fort." + std::to_string(unit));
     if (!fs::exists(produced)) {
+      if (spec.resultsOptional) {
+        continue;
+      }
       mess << fmt::format("  unit {} ({}) was not written by the study\n", unit, destination.string());
       continue;
     }
@@ -293,6 +297,7 @@ JobResult runCommandFile(const fs::path& commandFile, const std::map<int, fs::pa
   spec.results[6] = outputBase / (stem + ".mess");
   spec.results[8] = outputBase / (stem + ".resu");
   spec.results[80] = outputBase / (stem + ".rmed");
+  spec.resultsOptional = true;
   return runSpec(spec, options);
 }
 

@@ -15,7 +15,7 @@ std::string pad(const std::string& s, std::size_t width) {
 }
 
 // The error and tolerance columns: two significant digits, like "4.8E-11%".
-std::string shortNumber(double x) { return fmt::format("{:.2G}", x); }
+std::string shortNumber(double x) { return x == 0.0 ? "0.0" : fmt::format("{:.2G}", x); }
 
 struct Comparison {
   bool ok;
