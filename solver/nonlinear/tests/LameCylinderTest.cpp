@@ -1,5 +1,6 @@
 // Lame thick cylinder under internal pressure (plane strain), solved by the linear static
-// driver in D_PLAN (quarter ring) and AXIS (a slice with u_z = 0 on both faces), against
+// driver in D_PLAN (quarter ring), AXIS (a slice with u_z = 0 on both faces) and 3D (a quarter
+// ring slice with u_z = 0), against
 // u_r(r) = (1 + nu) p a^2 / (E (b^2 - a^2)) ((1 - 2 nu) r + b^2 / r). The displacement L2 error
 // must converge with order about 2 for linear and 3 for quadratic cells; the reactions balance
 // the pressure resultant (per radian in AXIS).
@@ -48,12 +49,34 @@ struct Errors {
   double reactionBalance = 0.0;
 };
 
+// Faces of HEXA8 / HEXA20 box cells on the parametric plane x = 0, ordered so that the normal
+// points out of the cell (-x): vertices 0, 4, 7, 3 and, for HEXA20, mid-edges 12, 19, 15, 11.
+void collectInnerFaces(const fem::PlainMesh& param, CellBlock& skin) {
+  const bool quadratic = param.cellType == CellType::HEXA20;
+  skin.type = quadratic ? CellType::QUAD8 : CellType::QUAD4;
+  const int face[] = {0, 4, 7, 3, 12, 19, 15, 11};
+  for (int c = 0; c < param.cellCount(); ++c) {
+    const int* n = param.cell(c);
+    bool inner = true;
+    for (int k = 0; k < 4; ++k) {
+      inner = inner && std::abs(param.coordinates(n[face[k]], 0)) < 1e-12;
+    }
+    if (inner) {
+      for (int k = 0; k < (quadratic ? 8 : 4); ++k) {
+        skin.connectivity.push_back(n[face[k]]);
+      }
+    }
+  }
+}
+
 Errors solveLame(CellType type, fem::Modelling m, int divisions) {
+  const bool threeD = m == fem::Modelling::ThreeD;
   const fem::PlainMesh param = fem::boxMesh(type, {divisions, divisions, 1}, {1.0, 1.0, 1.0});
   LinearStaticProblem pb;
   pb.modelling = m;
   pb.material = {young, nu};
-  pb.coordinates.resize(param.nodeCount(), 2);
+  const int dim = threeD ? 3 : 2;
+  pb.coordinates.resize(param.nodeCount(), dim);
   for (int n = 0; n < param.nodeCount(); ++n) {
     const double s = param.coordinates(n, 0), t = param.coordinates(n, 1);
     const double r = a + (b - a) * s;
@@ -61,7 +84,13 @@ Errors solveLame(CellType type, fem::Modelling m, int divisions) {
       pb.coordinates.row(n) << r, height * t;
     } else {
       const double theta = 0.5 * std::numbers::pi * t;
-      pb.coordinates.row(n) << r * std::cos(theta), r * std::sin(theta);
+      pb.coordinates(n, 0) = r * std::cos(theta);
+      pb.coordinates(n, 1) = r * std::sin(theta);
+      if (threeD) {
+        const double w = param.coordinates(n, 2);
+        pb.coordinates(n, 2) = height * w;
+        pb.imposed.push_back({n, 2, 0.0}); // DZ = 0 everywhere on the slice: plane strain
+      }
     }
     if (std::abs(t) < 1e-12) {
       pb.imposed.push_back({n, 1, 0.0}); // DY = 0 on theta = 0 (or z = 0)
@@ -73,7 +102,11 @@ Errors solveLame(CellType type, fem::Modelling m, int divisions) {
   pb.volumes.push_back({type, param.connectivity});
   PressureLoad load;
   load.pressure = p;
-  collectInnerEdges(param, load.skin);
+  if (threeD) {
+    collectInnerFaces(param, load.skin);
+  } else {
+    collectInnerEdges(param, load.skin);
+  }
   pb.pressures.push_back(load);
   const LinearStaticResult res = solveLinearStatic(pb);
 
@@ -83,7 +116,7 @@ Errors solveLame(CellType type, fem::Modelling m, int divisions) {
   fem::ElementKinematics kin;
   const int npc = param.nodesPerCell();
   for (int c = 0; c < param.cellCount(); ++c) {
-    Eigen::MatrixXd x(npc, 2), u(npc, 2);
+    Eigen::MatrixXd x(npc, dim), u(npc, dim);
     for (int k = 0; k < npc; ++k) {
       x.row(k) = pb.coordinates.row(param.cell(c)[k]);
       u.row(k) = res.displacement.row(param.cell(c)[k]);
@@ -91,7 +124,7 @@ Errors solveLame(CellType type, fem::Modelling m, int divisions) {
     fem::computeKinematics(type, m, x, kin);
     for (int q = 0; q < kin.pointCount(); ++q) {
       const Eigen::VectorXd& shape = kin.table->values[static_cast<std::size_t>(q)];
-      const Eigen::Vector2d uh = u.transpose() * shape;
+      const Eigen::Vector2d uh = (u.transpose() * shape).head<2>();
       const Eigen::Vector2d xq = kin.points[static_cast<std::size_t>(q)].head<2>();
       Eigen::Vector2d ue;
       if (m == fem::Modelling::Axisymmetric) {
@@ -147,6 +180,11 @@ TEST(LameCylinder, AxisymmetricConvergenceOrders) {
   checkOrder(CellType::QUAD4, fem::Modelling::Axisymmetric, 1.8);
   checkOrder(CellType::QUAD8, fem::Modelling::Axisymmetric, 2.7);
   checkOrder(CellType::TRIA6, fem::Modelling::Axisymmetric, 2.7);
+}
+
+TEST(LameCylinder, ThreeDimensionalSliceConvergenceOrders) {
+  checkOrder(CellType::HEXA8, fem::Modelling::ThreeD, 1.8);
+  checkOrder(CellType::HEXA20, fem::Modelling::ThreeD, 2.7);
 }
 
 // The resultant of the pressure on the quarter arc, p * a along X and along Y, is carried by the
