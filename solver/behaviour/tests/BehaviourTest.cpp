@@ -130,6 +130,26 @@ TEST(VonMisesIsotropicLinear, ConsistentTangentMatchesFiniteDifferences) {
   }
 }
 
+// After a plastic step, the prediction tangent (RIGI_MECA_TANG) is the continuum elastoplastic
+// one: under uniaxial stress its apparent modulus 1 / (C^-1)_xx is the tangent modulus ET.
+TEST(VonMisesIsotropicLinear, PredictionTangentGivesTheUniaxialTangentModulus) {
+  const VonMisesIsotropicLinear b(steel, {20000.0, 400.0});
+  State s;
+  for (int step = 0; step < 4; ++step) {
+    s = uniaxialStep(b, s, 1e-3);
+  }
+  ASSERT_EQ(s.vari[1], 1.0);
+  PointInput in{s.strain, Vector6::Zero(), s.stress, s.vari, Option::PredictionTangent};
+  PointOutput out;
+  b.integrate(in, out);
+  EXPECT_NEAR(1.0 / out.tangent.inverse()(0, 0), 20000.0, 1e-6 * 20000.0);
+  // elastic before any plasticity
+  const State fresh;
+  PointInput in0{fresh.strain, Vector6::Zero(), fresh.stress, fresh.vari, Option::PredictionTangent};
+  b.integrate(in0, out);
+  EXPECT_NEAR(1.0 / out.tangent.inverse()(0, 0), steel.youngModulus, 1e-6 * steel.youngModulus);
+}
+
 TEST(VonMisesIsotropicLinear, PlaneStressKeepsSigmaZzZero) {
   const VonMisesIsotropicLinear b(steel, {20000.0, 400.0});
   Eigen::VectorXd eps0 = Eigen::VectorXd::Zero(4), de(4), s0 = Eigen::VectorXd::Zero(4), s(4);
