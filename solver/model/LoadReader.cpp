@@ -1,0 +1,281 @@
+// AFFE_CHAR_MECA / AFFE_CHAR_CINE keywords -> MechanicalLoad / KinematicLoad.
+
+#include "solver/model/LoadReader.hpp"
+
+#include "interpreter/Diagnostics.hpp"
+#include "solver/model/Selection.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+
+namespace stella {
+
+namespace {
+
+const char* const physicalDofs[] = {"DX", "DY", "DZ"};
+const char* const otherDofs[] = {"DRX",     "DRY",     "DRZ",  "GRX",   "PRES", "PHI",
+                                 "TEMP",    "PRE1",    "PRE2", "GONF",  "GLIS", "LAGS_C",
+                                 "LAGS_F1", "LAGS_F2", "DNOR", "DRNOR", "DTAN"};
+
+UserError missingComponent(const Model& model, const std::string& name, const SourceLocation& at) {
+  return UserError(
+      Diagnostic::fatal("LOAD_1", fmt::format("the model has no component {} on its nodes", name), at)
+          .withNote(fmt::format("its nodes carry {}{}", fmt::join(model.componentNames(), ", "),
+                                name == "DZ" ? " (a 2D model has no DZ)" : "")));
+}
+
+int componentOrThrow(const Model& model, const std::string& name, const SourceLocation& at) {
+  auto c = model.componentIndex(name);
+  if (!c) {
+    throw missingComponent(model, name, at);
+  }
+  return *c;
+}
+
+std::vector<CellId> cellsOfKind(const Model& model, const KeywordTree& occ, ElementKind kind,
+                                const char* keyword) {
+  std::vector<CellId> out;
+  for (CellId c : selectCells(*model.mesh, occ)) {
+    if (model.cell(c).kind == kind) {
+      out.push_back(c);
+    }
+  }
+  if (out.empty()) {
+    const char* what = kind == ElementKind::Skin
+                           ? (model.components == 2 ? "edge (SEG) cells" : "face (TRIA, QUAD) cells")
+                           : "volume cells";
+    throw UserError(
+        Diagnostic::fatal("LOAD_3",
+                          fmt::format("{}: the selected cells include no {} of the model", keyword, what),
+                          occ.location())
+            .withNote("check the group: it must hold cells the model (AFFE_MODELE) carries as " +
+                      std::string(kind == ElementKind::Skin ? "skin elements" : "volume elements")));
+  }
+  return out;
+}
+
+std::array<double, 3> forceVector(const Model& model, const KeywordTree& occ) {
+  std::array<double, 3> f{};
+  for (int c = 0; c < 3; ++c) {
+    const std::string name = std::string("F") + "XYZ"[c];
+    if (occ.has(name)) {
+      if (c >= model.components) {
+        throw missingComponent(model, "D" + name.substr(1), occ.locationOf(name));
+      }
+      f[static_cast<std::size_t>(c)] = occ.real(name);
+    }
+  }
+  return f;
+}
+
+void readImposed(const Model& model, const KeywordTree& occ, const char* keyword, MechanicalLoad& load) {
+  if (occ.has("BLOCAGE")) {
+    throw UserError(
+        Diagnostic::fatal("LOAD_4", "DDL_IMPO BLOCAGE is not implemented yet", occ.locationOf("BLOCAGE"))
+            .withNote("give DX=0, DY=0 (, DZ=0)"));
+  }
+  const auto components = imposedComponents(model, occ);
+  for (NodeId n : modelNodes(model, occ)) {
+    for (const auto& [c, v] : components) {
+      load.relations.push_back({{{n, c, 1.0}}, v, keyword});
+    }
+  }
+}
+
+void readLiaisonDdl(const Model& model, const KeywordTree& occ, MechanicalLoad& load) {
+  std::vector<NodeId> nodes;
+  if (occ.has("NOEUD")) {
+    for (const auto& name : occ.texts("NOEUD")) {
+      nodes.push_back(nodeOrThrow(*model.mesh, name, occ, "NOEUD"));
+    }
+  } else {
+    for (const auto& g : occ.texts("GROUP_NO")) { // each group names one node, in order
+      const auto& group = nodeGroupOrThrow(*model.mesh, g, occ, "GROUP_NO");
+      nodes.insert(nodes.end(), group.begin(), group.end());
+    }
+  }
+  const auto dofs = occ.texts("DDL");
+  const auto coefs = occ.reals("COEF_MULT");
+  if (nodes.size() != dofs.size() || nodes.size() != coefs.size()) {
+    throw UserError(
+        Diagnostic::fatal("LOAD_5",
+                          fmt::format("LIAISON_DDL needs as many nodes as DDL and COEF_MULT values (got "
+                                      "{} nodes, {} DDL, {} COEF_MULT)",
+                                      nodes.size(), dofs.size(), coefs.size()),
+                          occ.location()));
+  }
+  LinearRelation r;
+  r.value = occ.real("COEF_IMPO");
+  r.origin = "LIAISON_DDL";
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    if (!model.nodeActive(nodes[i])) {
+      throw UserError(Diagnostic::fatal(
+          "LOAD_2", fmt::format("node {} carries no element of the model", model.mesh->nodeName(nodes[i])),
+          occ.location()));
+    }
+    r.terms.push_back({nodes[i], componentOrThrow(model, dofs[i], occ.locationOf("DDL")), coefs[i]});
+  }
+  load.relations.push_back(std::move(r));
+}
+
+void readLiaisonUnif(const Model& model, const KeywordTree& occ, MechanicalLoad& load) {
+  const auto nodes = modelNodes(model, occ);
+  for (const auto& name : occ.texts("DDL")) {
+    const int c = componentOrThrow(model, name, occ.locationOf("DDL"));
+    for (std::size_t i = 1; i < nodes.size(); ++i) {
+      load.relations.push_back({{{nodes[0], c, 1.0}, {nodes[i], c, -1.0}}, 0.0, "LIAISON_UNIF"});
+    }
+  }
+}
+
+void readForces(const Model& model, const KeywordTree& keywords, MechanicalLoad& load) {
+  for (const KeywordTree& occ : keywords.occurrences("FORCE_NODALE")) {
+    for (const char* m : {"MX", "MY", "MZ", "ANGL_NAUT"}) {
+      if (occ.has(m)) {
+        throw UserError(Diagnostic::fatal("LOAD_4", fmt::format("FORCE_NODALE {} is not implemented yet", m),
+                                          occ.locationOf(m))
+                            .withNote("the 3D, D_PLAN, C_PLAN and AXIS elements have no rotation"));
+      }
+    }
+    const auto f = forceVector(model, occ);
+    for (NodeId n : modelNodes(model, occ)) {
+      for (int c = 0; c < model.components; ++c) {
+        if (f[static_cast<std::size_t>(c)] != 0.0) {
+          load.nodalForces.push_back({n, c, f[static_cast<std::size_t>(c)]});
+        }
+      }
+    }
+  }
+  for (const KeywordTree& occ : keywords.occurrences("PRES_REP")) {
+    if (occ.has("CISA_2D")) {
+      throw UserError(
+          Diagnostic::fatal("LOAD_4", "PRES_REP CISA_2D is not implemented yet", occ.locationOf("CISA_2D")));
+    }
+    for (CellId c : cellsOfKind(model, occ, ElementKind::Skin, "PRES_REP")) {
+      load.pressures.push_back({c, occ.real("PRES")});
+    }
+  }
+  for (const char* key : {"FORCE_CONTOUR", "FORCE_FACE"}) {
+    for (const KeywordTree& occ : keywords.occurrences(key)) {
+      const bool twoD = std::string(key) == "FORCE_CONTOUR";
+      if (twoD != (model.components == 2)) {
+        throw UserError(Diagnostic::fatal("LOAD_3",
+                                          fmt::format("{} applies to {} models", key, twoD ? "2D" : "3D"),
+                                          occ.location())
+                            .withNote(twoD ? "on faces of a 3D model use FORCE_FACE"
+                                           : "on edges of a 2D model use FORCE_CONTOUR"));
+      }
+      const auto f = forceVector(model, occ);
+      for (CellId c : cellsOfKind(model, occ, ElementKind::Skin, key)) {
+        load.surfaceForces.push_back({c, f});
+      }
+    }
+  }
+  for (const KeywordTree& occ : keywords.occurrences("FORCE_INTERNE")) {
+    const auto f = forceVector(model, occ);
+    for (CellId c : cellsOfKind(model, occ, ElementKind::Volume, "FORCE_INTERNE")) {
+      load.volumeForces.push_back({c, f});
+    }
+  }
+  for (const KeywordTree& occ : keywords.occurrences("PESANTEUR")) {
+    auto d = occ.reals("DIRECTION");
+    const double norm = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (!(norm > 0.0)) {
+      throw UserError(
+          Diagnostic::fatal("LOAD_6", "PESANTEUR DIRECTION is the zero vector", occ.locationOf("DIRECTION")));
+    }
+    Gravity g;
+    const double a = occ.real("GRAVITE") / norm;
+    g.acceleration = {a * d[0], a * d[1], a * d[2]};
+    if (occ.has("GROUP_MA")) {
+      g.cells = cellsOfKind(model, occ, ElementKind::Volume, "PESANTEUR");
+    } else {
+      g.cells = model.cellsOfKind(ElementKind::Volume);
+    }
+    load.gravity.push_back(std::move(g));
+  }
+}
+
+} // namespace
+
+std::vector<std::pair<int, double>> imposedComponents(const Model& model, const KeywordTree& occ) {
+  std::vector<std::pair<int, double>> out;
+  for (const char* name : otherDofs) {
+    if (occ.has(name)) {
+      throw UserError(
+          Diagnostic::fatal("LOAD_1",
+                            fmt::format("the model has no component {}; imposing it is not possible", name),
+                            occ.locationOf(name))
+              .withNote(
+                  fmt::format("the nodes of this model carry {}", fmt::join(model.componentNames(), ", "))));
+    }
+  }
+  for (const char* name : physicalDofs) {
+    if (occ.has(name)) {
+      out.emplace_back(componentOrThrow(model, name, occ.locationOf(name)), occ.real(name));
+    }
+  }
+  return out;
+}
+
+std::vector<NodeId> modelNodes(const Model& model, const KeywordTree& occ) {
+  auto nodes = selectNodes(*model.mesh, occ);
+  for (NodeId n : nodes) {
+    if (!model.nodeActive(n)) {
+      throw UserError(
+          Diagnostic::fatal("LOAD_2",
+                            fmt::format("node {} carries no element of the model, so it has no "
+                                        "displacement to impose or load",
+                                        model.mesh->nodeName(n)),
+                            occ.location())
+              .withNote(
+                  "check the group, or assign a modelisation to the cells around the node (AFFE_MODELE)"));
+    }
+  }
+  if (nodes.empty()) {
+    throw UserError(Diagnostic::fatal("LOAD_2", "the selection holds no node", occ.location()));
+  }
+  return nodes;
+}
+
+void readMechanicalLoad(const KeywordTree& keywords, MechanicalLoad& load) {
+  const Model& model = *load.model;
+  for (const char* key :
+       {"ROTATION", "ARETE_IMPO", "LIAISON_OBLIQUE", "LIAISON_GROUP", "LIAISON_MAIL", "LIAISON_SOLIDE",
+        "FORCE_ARETE", "FORCE_POUTRE", "FORCE_COQUE", "PRE_SIGM", "PRE_EPSI"}) {
+    if (keywords.has(key)) {
+      throw UserError(Diagnostic::fatal(
+          "LOAD_4", fmt::format("AFFE_CHAR_MECA {} is not implemented yet", key), keywords.locationOf(key)));
+    }
+  }
+  for (const KeywordTree& occ : keywords.occurrences("DDL_IMPO")) {
+    readImposed(model, occ, "DDL_IMPO", load);
+  }
+  for (const KeywordTree& occ : keywords.occurrences("FACE_IMPO")) {
+    readImposed(model, occ, "FACE_IMPO", load);
+  }
+  for (const KeywordTree& occ : keywords.occurrences("LIAISON_DDL")) {
+    readLiaisonDdl(model, occ, load);
+  }
+  for (const KeywordTree& occ : keywords.occurrences("LIAISON_UNIF")) {
+    readLiaisonUnif(model, occ, load);
+  }
+  readForces(model, keywords, load);
+}
+
+void readKinematicLoad(const KeywordTree& keywords, KinematicLoad& load) {
+  if (keywords.has("EVOL_IMPO")) {
+    throw UserError(Diagnostic::fatal("LOAD_4", "AFFE_CHAR_CINE EVOL_IMPO is not implemented yet",
+                                      keywords.locationOf("EVOL_IMPO")));
+  }
+  for (const KeywordTree& occ : keywords.occurrences("MECA_IMPO")) {
+    const auto components = imposedComponents(*load.model, occ);
+    for (NodeId n : modelNodes(*load.model, occ)) {
+      for (const auto& [c, v] : components) {
+        load.imposed.push_back({n, c, v});
+      }
+    }
+  }
+}
+
+} // namespace stella

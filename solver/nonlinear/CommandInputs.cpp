@@ -1,0 +1,93 @@
+// CommandInputs: EXCIT, MODELE, CHAM_MATER and SOLVEUR of the static drivers.
+
+#include "solver/nonlinear/CommandInputs.hpp"
+
+#include "interpreter/Diagnostics.hpp"
+#include "solver/session/OperatorRegistry.hpp"
+
+#include <fmt/format.h>
+
+namespace stella {
+
+std::vector<Excitation> readExcitations(const KeywordTree& keywords) {
+  std::vector<Excitation> out;
+  for (const KeywordTree& occ : keywords.occurrences("EXCIT")) {
+    Excitation e;
+    auto charge = occ.conceptValue("CHARGE");
+    e.load = conceptData<MechanicalLoad>(charge);
+    e.kinematic = conceptData<KinematicLoad>(charge);
+    if (!e.load && !e.kinematic) {
+      throw UserError(Diagnostic::fatal("LOAD_9",
+                                        fmt::format("CHARGE={} is not a mechanical load", charge->name),
+                                        occ.locationOf("CHARGE"))
+                          .withNote("contact definitions (DEFI_CONTACT) go in CONTACT=, not in EXCIT"));
+    }
+    if (occ.has("FONC_MULT")) {
+      auto f = occ.conceptValue("FONC_MULT");
+      e.multiplier = conceptData<RealFunction>(f);
+      if (!e.multiplier || e.multiplier->parameters().size() != 1) {
+        throw UserError(Diagnostic::fatal(
+            "LOAD_10", fmt::format("FONC_MULT={} must be a function of one parameter (INST)", f->name),
+            occ.locationOf("FONC_MULT")));
+      }
+    }
+    if (occ.textOr("TYPE_CHARGE", "FIXE_CSTE") != "FIXE_CSTE") {
+      throw UserError(Diagnostic::fatal(
+          "LOAD_4", fmt::format("TYPE_CHARGE='{}' is not implemented yet", occ.text("TYPE_CHARGE")),
+          occ.locationOf("TYPE_CHARGE")));
+    }
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+
+std::shared_ptr<const Model> readModel(const KeywordTree& keywords) {
+  auto model = conceptData<Model>(keywords.conceptValue("MODELE"));
+  STELLA_ASSERT(model != nullptr, "MODELE holds no model");
+  return model;
+}
+
+std::shared_ptr<const MaterialField> readMaterialField(const KeywordTree& keywords, const Model& model) {
+  if (!keywords.has("CHAM_MATER")) {
+    throw UserError(Diagnostic::fatal("MATER_9", "CHAM_MATER is missing: the model's cells need a material",
+                                      keywords.location())
+                        .withNote("build one with AFFE_MATERIAU and pass CHAM_MATER=..."));
+  }
+  auto field = conceptData<MaterialField>(keywords.conceptValue("CHAM_MATER"));
+  STELLA_ASSERT(field != nullptr, "CHAM_MATER holds no material field");
+  if (field->mesh != model.mesh) {
+    throw UserError(Diagnostic::fatal("MATER_9", "CHAM_MATER was built on another mesh than the model's",
+                                      keywords.locationOf("CHAM_MATER")));
+  }
+  return field;
+}
+
+linalg::SolverOptions readSolverOptions(const KeywordTree& keywords) {
+  linalg::SolverOptions o;
+  if (!keywords.has("SOLVEUR")) {
+    return o;
+  }
+  const KeywordTree& s = keywords.occurrences("SOLVEUR").front();
+  const std::string method = s.textOr("METHODE", "MUMPS");
+  auto m = linalg::solverMethodFromName(method);
+  if (!m || *m == linalg::SolverMethod::Petsc) {
+    throw UserError(Diagnostic::fatal("SOLVE_5",
+                                      fmt::format("SOLVEUR METHODE='{}' is not implemented yet", method),
+                                      s.locationOf("METHODE"))
+                        .withNote("use METHODE='MUMPS' (the default), 'MULT_FRONT', 'LDLT' or 'GCPC'"));
+  }
+  o.method = *m;
+  o.renumbering = s.textOr("RENUM", o.renumbering);
+  o.nprec = static_cast<int>(s.integerOr("NPREC", o.nprec));
+  o.pivotPercent = static_cast<double>(s.integerOr("PCENT_PIVOT", static_cast<std::int64_t>(o.pivotPercent)));
+  o.stopIfSingular = s.textOr("STOP_SINGULIER", "OUI") == "OUI";
+  if (s.has("RESI_RELA") && s.real("RESI_RELA") > 0.0) {
+    o.relativeResidual = s.real("RESI_RELA");
+  }
+  if (s.has("NMAX_ITER")) {
+    o.maxIterations = static_cast<int>(s.integer("NMAX_ITER"));
+  }
+  return o;
+}
+
+} // namespace stella

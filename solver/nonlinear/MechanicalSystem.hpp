@@ -1,0 +1,60 @@
+#pragma once
+// Everything a static mechanical analysis assembles, built once per command: the equations
+// (DOFs and multipliers of the dualised relations of every EXCIT load), the behaviours of the
+// cells, the eliminated DOFs of the kinematic loads, the constraint rows, and the solver that
+// keeps its factorisation.
+
+#include "solver/model/MaterialField.hpp"
+#include "solver/nonlinear/CellBehaviours.hpp"
+#include "solver/nonlinear/DofMap.hpp"
+#include "solver/nonlinear/Excitation.hpp"
+#include "solver/nonlinear/SaddleSolver.hpp"
+#include "solver/nonlinear/VolumeAssembler.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace stella {
+
+class MechanicalSystem {
+public:
+  // `relations[c]`: RELATION of each cell (see CellBehaviours). Throws UserError LOAD_8 when an
+  // excitation's load was built on another model, SOLVE_4 when one DOF is imposed twice by
+  // elimination with different multipliers.
+  MechanicalSystem(std::shared_ptr<const Model> model, std::shared_ptr<const MaterialField> materials,
+                   std::vector<Excitation> excitations, const std::vector<std::string>& relations,
+                   const SourceLocation& at);
+
+  const Model& model() const { return *model_; }
+  const DofMap& dofs() const { return dofs_; }
+  const CellBehaviours& behaviours() const { return behaviours_; }
+  const VolumeAssembler& assembler() const { return assembler_; }
+  SaddleSolver& solver() { return *solver_; }
+  const SaddleSolver& solver() const { return *solver_; }
+  const std::vector<Excitation>& excitations() const { return excitations_; }
+  int relationCount() const { return dofs_.lagrangeCount(); }
+
+  // External forces at a time (physical size).
+  Eigen::VectorXd externalForces(double time);
+  // Right-hand sides g of the relations at a time.
+  Eigen::VectorXd relationValues(double time) const;
+  // Values of the eliminated DOFs at a time (physical size, zero elsewhere).
+  Eigen::VectorXd eliminatedValues(double time) const;
+
+  // Tangent assembly (physical block).
+  Eigen::SparseMatrix<double> matrix(std::vector<Eigen::Triplet<double>>& triplets) const;
+
+private:
+  std::shared_ptr<const Model> model_;
+  std::shared_ptr<const MaterialField> materials_;
+  std::vector<Excitation> excitations_;
+  DofMap dofs_;
+  CellBehaviours behaviours_;
+  VolumeAssembler assembler_;
+  std::vector<int> relationExcitation_;
+  std::vector<std::tuple<int, int, double>> eliminated_; // equation, excitation, value
+  std::unique_ptr<SaddleSolver> solver_;
+  std::vector<Eigen::VectorXd> forceCache_;
+};
+
+} // namespace stella

@@ -1,0 +1,137 @@
+// VolumeAssembler: element integration and scattering over the volume cells.
+
+#include "solver/nonlinear/VolumeAssembler.hpp"
+
+#include "interpreter/Diagnostics.hpp"
+#include "solver/fem/ElementMatrices.hpp"
+#include "solver/fem/Kinematics.hpp"
+
+#include <fmt/format.h>
+
+namespace stella {
+
+Eigen::MatrixXd cellCoordinates(const Mesh& mesh, CellId c, int dim) {
+  const auto nodes = mesh.cellNodes(c);
+  Eigen::MatrixXd x(static_cast<Eigen::Index>(nodes.size()), dim);
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const Point3 p = mesh.point(nodes[i]);
+    for (int d = 0; d < dim; ++d) {
+      x(static_cast<Eigen::Index>(i), d) = p[static_cast<std::size_t>(d)];
+    }
+  }
+  return x;
+}
+
+VolumeAssembler::VolumeAssembler(const Model& model, const DofMap& dofs, const CellBehaviours& behaviours)
+    : model_(model), dofs_(dofs), behaviours_(behaviours), cells_(model.cellsOfKind(ElementKind::Volume)) {}
+
+void VolumeAssembler::cellDofs(CellId c, std::vector<int>& dofs) const {
+  dofs.clear();
+  for (NodeId n : model_.mesh->cellNodes(c)) {
+    for (int k = 0; k < dofs_.components(); ++k) {
+      dofs.push_back(dofs_.dof(n, k));
+    }
+  }
+}
+
+namespace {
+
+Eigen::VectorXd gather(const Eigen::VectorXd& u, const std::vector<int>& dofs) {
+  Eigen::VectorXd out(static_cast<Eigen::Index>(dofs.size()));
+  for (std::size_t i = 0; i < dofs.size(); ++i) {
+    out(static_cast<Eigen::Index>(i)) = u(dofs[i]);
+  }
+  return out;
+}
+
+Eigen::Map<const Eigen::VectorXd> row(const Field& f, std::size_t point) {
+  const auto s = f.entity(point);
+  return Eigen::Map<const Eigen::VectorXd>(s.data(), static_cast<Eigen::Index>(s.size()));
+}
+
+} // namespace
+
+AssemblyStatus VolumeAssembler::run(const Eigen::VectorXd& uStart, const Eigen::VectorXd& du,
+                                    const PointState& start, behaviour::Option option,
+                                    AssemblyOutput out) const {
+  (void)uStart;
+  const Mesh& mesh = *model_.mesh;
+  const int dim = dofs_.components();
+  AssemblyStatus status;
+  fem::ElementKinematics kin;
+  std::vector<int> dofs;
+  std::vector<Eigen::VectorXd> stresses;
+  std::vector<Eigen::MatrixXd> tangents;
+  Eigen::MatrixXd ke;
+  Eigen::VectorXd fe;
+  for (CellId c : cells_) {
+    const fem::Modelling m = model_.cell(c).modelling;
+    const int ns = fem::strainSize(m);
+    try {
+      fem::computeKinematics(mesh.cellType(c), m, cellCoordinates(mesh, c, dim), kin);
+    } catch (const fem::DegenerateElementError& e) {
+      throw UserError(
+          Diagnostic::fatal("ELEM_1",
+                            fmt::format("cell {} ({}) has a non-positive Jacobian ({:g}) at Gauss point {}",
+                                        mesh.cellName(c), name(mesh.cellType(c)), e.jacobian(),
+                                        e.gaussPoint() + 1))
+              .withNote(m == fem::Modelling::Axisymmetric
+                            ? "in AXIS the cell must lie in x >= 0 and its nodes turn counter-clockwise"
+                            : "the cell is inverted or flat: check the mesh (node order, duplicated nodes)"));
+    }
+    cellDofs(c, dofs);
+    const Eigen::VectorXd due = gather(du, dofs);
+    const behaviour::Behaviour& b = *behaviours_.of(c);
+    const auto nv = static_cast<std::size_t>(b.internalVariableCount());
+    stresses.resize(static_cast<std::size_t>(kin.pointCount()));
+    tangents.resize(static_cast<std::size_t>(kin.pointCount()));
+    const std::size_t first = start.stress.firstPoint(static_cast<std::size_t>(c));
+    for (int q = 0; q < kin.pointCount(); ++q) {
+      const std::size_t p = first + static_cast<std::size_t>(q);
+      Eigen::VectorXd deps = fem::strainAt(kin, q, due);
+      Eigen::VectorXd sigma(ns);
+      std::vector<double> vari(nv, 0.0);
+      auto& t = tangents[static_cast<std::size_t>(q)];
+      const auto varStart = start.internal.entity(p).subspan(0, nv);
+      auto s = behaviour::integrateInModelling(b, m, option, row(start.strain, p), deps, row(start.stress, p),
+                                               varStart, sigma, vari, out.matrix ? &t : nullptr);
+      if (s == behaviour::IntegrationStatus::Failed && !status.failedCell) {
+        status.failedCell = c;
+      }
+      if (!behaviour::integrates(option)) {
+        sigma = row(start.stress, p);
+        std::copy(varStart.begin(), varStart.end(), vari.begin());
+        deps.setZero();
+      }
+      stresses[static_cast<std::size_t>(q)] = sigma;
+      if (out.end != nullptr) {
+        auto eps = out.end->strain.entity(p);
+        auto sig = out.end->stress.entity(p);
+        auto var = out.end->internal.entity(p);
+        for (int k = 0; k < ns; ++k) {
+          eps[static_cast<std::size_t>(k)] = row(start.strain, p)(k) + deps(k);
+          sig[static_cast<std::size_t>(k)] = sigma(k);
+        }
+        std::copy(vari.begin(), vari.end(), var.begin());
+      }
+    }
+    if (out.internalForces != nullptr) {
+      fem::internalForces(kin, stresses, fe);
+      for (std::size_t i = 0; i < dofs.size(); ++i) {
+        (*out.internalForces)(dofs[i]) += fe(static_cast<Eigen::Index>(i));
+      }
+    }
+    if (out.matrix != nullptr) {
+      fem::stiffness(kin, tangents, ke);
+      for (std::size_t i = 0; i < dofs.size(); ++i) {
+        for (std::size_t j = 0; j < dofs.size(); ++j) {
+          out.matrix->emplace_back(dofs[i], dofs[j],
+                                   ke(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)));
+        }
+      }
+    }
+  }
+  return status;
+}
+
+} // namespace stella

@@ -1,0 +1,52 @@
+#pragma once
+// The loop over the model's volume cells: kinematics, behaviour integration at every Gauss
+// point, element internal forces B^T sigma and tangents B^T D B, scattered into global vectors
+// and matrix triplets (physical DOFs only).
+
+#include "solver/behaviour/Behaviour.hpp"
+#include "solver/nonlinear/CellBehaviours.hpp"
+#include "solver/nonlinear/DofMap.hpp"
+#include "solver/nonlinear/PointState.hpp"
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <optional>
+#include <vector>
+
+namespace stella {
+
+struct AssemblyOutput {
+  std::vector<Eigen::Triplet<double>>* matrix = nullptr; // tangent entries (null: not wanted)
+  Eigen::VectorXd* internalForces = nullptr;             // physical size (null: not wanted)
+  PointState* end = nullptr;                             // state at the end (null: not wanted)
+};
+
+// The first cell whose behaviour failed to integrate (a step-cutting event), if any.
+struct AssemblyStatus {
+  std::optional<CellId> failedCell;
+  bool ok() const { return !failedCell; }
+};
+
+class VolumeAssembler {
+public:
+  VolumeAssembler(const Model& model, const DofMap& dofs, const CellBehaviours& behaviours);
+
+  // Integrates over the step from displacement `uStart` with increment `du` (physical size) and
+  // the state `start`. Throws UserError ELEM_1 naming a cell with a non-positive Jacobian.
+  AssemblyStatus run(const Eigen::VectorXd& uStart, const Eigen::VectorXd& du, const PointState& start,
+                     behaviour::Option option, AssemblyOutput out) const;
+
+  // Element DOFs (global equations) of a cell.
+  void cellDofs(CellId c, std::vector<int>& dofs) const;
+
+private:
+  const Model& model_;
+  const DofMap& dofs_;
+  const CellBehaviours& behaviours_;
+  std::vector<CellId> cells_;
+};
+
+// Coordinates of a cell's nodes as a (nodes x dim) matrix.
+Eigen::MatrixXd cellCoordinates(const Mesh& mesh, CellId c, int dim);
+
+} // namespace stella

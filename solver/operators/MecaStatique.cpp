@@ -1,0 +1,97 @@
+// MECA_STATIQUE: linear static analysis, one solve per instant (INST, LIST_INST, default 0),
+// results DEPL and SIEF_ELGA in an evol_elas from NUME_ORDRE 1.
+
+#include "interpreter/Diagnostics.hpp"
+#include "solver/database/Result.hpp"
+#include "solver/functions/InstantList.hpp"
+#include "solver/nonlinear/CommandInputs.hpp"
+#include "solver/nonlinear/ElasticSolve.hpp"
+#include "solver/nonlinear/ResultFields.hpp"
+#include "solver/session/OperatorRegistry.hpp"
+#include "solver/session/Session.hpp"
+
+#include <fmt/format.h>
+
+namespace stella {
+
+namespace {
+
+std::vector<double> instants(const KeywordTree& kw) {
+  std::vector<double> times;
+  if (kw.has("INST")) {
+    times = kw.reals("INST");
+  } else if (kw.has("LIST_INST")) {
+    auto c = kw.conceptValue("LIST_INST");
+    if (auto l = conceptData<RealList>(c)) {
+      times = l->values;
+    } else if (auto li = conceptData<InstantList>(c)) {
+      times = li->instants;
+    }
+    if (kw.has("INST_FIN")) {
+      const double end = kw.real("INST_FIN");
+      std::erase_if(times, [&](double t) { return t > end * (1.0 + 1.0e-12) + 1.0e-300; });
+    }
+  } else {
+    times = {0.0};
+  }
+  if (times.empty()) {
+    throw UserError(Diagnostic::fatal("STAT_1", "no instant to compute", kw.location()));
+  }
+  return times;
+}
+
+Value runMecaStatique(OperatorCall& call) {
+  const KeywordTree& kw = call.keywords;
+  if (kw.has("CARA_ELEM")) {
+    throw UserError(Diagnostic::fatal("STAT_2", "MECA_STATIQUE CARA_ELEM is not implemented yet",
+                                      kw.locationOf("CARA_ELEM")));
+  }
+  auto model = readModel(kw);
+  auto materials = readMaterialField(kw, *model);
+  auto excitations = readExcitations(kw);
+  std::vector<std::string> relations(model->cells.size(), "ELAS");
+  MechanicalSystem system(model, materials, excitations, relations, call.location);
+  system.solver().setOptions(readSolverOptions(kw));
+  const bool withStress = kw.textOr("OPTION", "SIEF_ELGA") == "SIEF_ELGA";
+  auto& msg = call.session.message();
+  msg << fmt::format("   equations: {} ({} displacement DOFs, {} Lagrange multipliers)\n",
+                     system.dofs().size(), system.dofs().physicalCount(), system.dofs().lagrangeCount());
+  msg << fmt::format(
+      "   effects: linear elasticity (no return mapping), {} load(s), one factorisation for every "
+      "instant\n",
+      excitations.size());
+
+  std::shared_ptr<Result> result;
+  if (call.reused) {
+    result = conceptData<Result>(call.reused);
+  }
+  if (!result) {
+    result = std::make_shared<Result>();
+    result->type = "evol_elas";
+    result->mesh = model->mesh;
+    result->model = std::const_pointer_cast<Model>(model);
+    result->material = std::const_pointer_cast<MaterialField>(materials);
+  }
+  ElasticSolve solver(system);
+  bool first = true;
+  for (double t : instants(kw)) {
+    StaticSolution s = solver.solve(t, withStress);
+    if (first) {
+      msg << fmt::format("   linear solver: {} ({} matrix, factorised once)\n", system.solver().backendName(),
+                         system.dofs().lagrangeCount() > 0 ? "symmetric indefinite"
+                                                           : "symmetric positive definite");
+      first = false;
+    }
+    ResultStep& step = result->addStep(t, 1);
+    storeMechanicalFields(step, *model, system.dofs(), s.displacement, s.state, withStress, false);
+    msg << fmt::format("   stored NUME_ORDRE {} at INST {}: max |u| = {:.6e}\n", step.number, t,
+                       s.displacement.size() ? s.displacement.cwiseAbs().maxCoeff() : 0.0);
+  }
+  return call.makeConcept(result);
+}
+
+} // namespace
+
+STELLA_OPERATOR("MECA_STATIQUE", runMecaStatique);
+
+} // namespace stella

@@ -1,0 +1,244 @@
+// FieldSelection: steps, fields, components and entities of results for TEST_RESU and tables.
+
+#include "solver/post/FieldSelection.hpp"
+
+#include "interpreter/Diagnostics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+namespace stella {
+
+namespace {
+
+std::string stepList(const Result& r) {
+  std::vector<std::string> items;
+  for (const auto& s : r.steps) {
+    items.push_back(fmt::format("{} (INST {})", s.number, s.time));
+    if (items.size() == 12) {
+      items.push_back("...");
+      break;
+    }
+  }
+  return items.empty() ? "none" : fmt::format("{}", fmt::join(items, ", "));
+}
+
+std::size_t singleNodeOfGroup(const Mesh& mesh, const std::string& group, const KeywordTree& occ) {
+  const auto* nodes = mesh.nodeGroup(group);
+  if (nodes == nullptr) {
+    throw UserError(Diagnostic::fatal("GROUP_2",
+                                      fmt::format("the mesh has no node group (GROUP_NO) '{}'", group),
+                                      occ.locationOf("GROUP_NO")));
+  }
+  if (nodes->size() != 1) {
+    throw UserError(
+        Diagnostic::fatal("RESU_4",
+                          fmt::format("GROUP_NO '{}' holds {} nodes; one node is needed to test a value",
+                                      group, nodes->size()),
+                          occ.locationOf("GROUP_NO"))
+            .withNote("use NOEUD, a group of one node, or TYPE_TEST='MIN', 'MAX', 'SOMM' or 'SOMM_ABS'"));
+  }
+  return static_cast<std::size_t>(nodes->front());
+}
+
+} // namespace
+
+const ResultStep& selectStep(const Result& result, const std::string& resultName, const KeywordTree& occ) {
+  const ResultStep* step = nullptr;
+  std::string what;
+  if (occ.has("NUME_ORDRE")) {
+    step = result.stepNumber(static_cast<int>(occ.integer("NUME_ORDRE")));
+    what = fmt::format("NUME_ORDRE {}", occ.integer("NUME_ORDRE"));
+  } else if (occ.has("INST")) {
+    step = result.stepAtTime(occ.real("INST"));
+    what = fmt::format("INST {}", occ.real("INST"));
+  } else if (!result.steps.empty()) {
+    step = &result.steps.back();
+  }
+  if (step == nullptr) {
+    throw UserError(Diagnostic::fatal("RESU_1", fmt::format("result {} has no step at {}", resultName, what),
+                                      occ.location())
+                        .withNote(fmt::format("its stored steps (NUME_ORDRE, INST): {}", stepList(result))));
+  }
+  return *step;
+}
+
+const Field& selectField(const ResultStep& step, const std::string& resultName, const std::string& fieldName,
+                         const KeywordTree& occ) {
+  const Field* f = step.field(fieldName);
+  if (f == nullptr) {
+    std::vector<std::string> names;
+    for (const auto& [n, v] : step.fields) {
+      names.push_back(n);
+    }
+    throw UserError(
+        Diagnostic::fatal(
+            "RESU_2",
+            fmt::format("result {} has no field {} at NUME_ORDRE {}", resultName, fieldName, step.number),
+            occ.locationOf("NOM_CHAM"))
+            .withNote(fmt::format("fields stored there: {}; compute others with CALC_CHAMP",
+                                  names.empty() ? "none" : fmt::format("{}", fmt::join(names, ", ")))));
+  }
+  return *f;
+}
+
+std::size_t selectComponent(const Field& field, const std::string& fieldName, const std::string& component,
+                            const KeywordTree& occ) {
+  auto c = field.componentIndex(component);
+  if (!c) {
+    throw UserError(Diagnostic::fatal("RESU_3",
+                                      fmt::format("field {} has no component {}", fieldName, component),
+                                      occ.locationOf("NOM_CMP"))
+                        .withNote(fmt::format("its components: {}", fmt::join(field.components(), ", "))));
+  }
+  return *c;
+}
+
+EntitySelection selectEntities(const Mesh& mesh, const Field& field, const KeywordTree& occ) {
+  EntitySelection s;
+  if (field.support() == FieldSupport::Node) {
+    if (occ.has("NOEUD")) {
+      const std::string name = occ.text("NOEUD");
+      auto n = mesh.findNode(name);
+      if (!n) {
+        throw UserError(Diagnostic::fatal("GROUP_3", fmt::format("the mesh has no node named '{}'", name),
+                                          occ.locationOf("NOEUD")));
+      }
+      return {{static_cast<std::size_t>(*n)}, true, name};
+    }
+    if (occ.has("GROUP_NO") && !occ.has("TYPE_TEST")) {
+      const std::string group = occ.texts("GROUP_NO").front();
+      const std::size_t n = singleNodeOfGroup(mesh, group, occ);
+      return {{n}, true, mesh.nodeName(static_cast<NodeId>(n))};
+    }
+    std::vector<NodeId> nodes;
+    if (occ.has("GROUP_NO")) {
+      for (const auto& g : occ.texts("GROUP_NO")) {
+        const auto* group = mesh.nodeGroup(g);
+        if (group == nullptr) {
+          throw UserError(Diagnostic::fatal("GROUP_2",
+                                            fmt::format("the mesh has no node group (GROUP_NO) '{}'", g),
+                                            occ.locationOf("GROUP_NO")));
+        }
+        nodes.insert(nodes.end(), group->begin(), group->end());
+      }
+    } else if (occ.has("GROUP_MA")) {
+      const auto* cells = mesh.cellGroup(occ.text("GROUP_MA"));
+      if (cells == nullptr) {
+        throw UserError(Diagnostic::fatal(
+            "GROUP_1", fmt::format("the mesh has no cell group (GROUP_MA) '{}'", occ.text("GROUP_MA")),
+            occ.locationOf("GROUP_MA")));
+      }
+      nodes = mesh.nodesOfCells(*cells);
+    } else {
+      for (std::size_t n = 0; n < field.entityCount(); ++n) {
+        s.entities.push_back(n);
+      }
+      return s;
+    }
+    for (NodeId n : nodes) {
+      s.entities.push_back(static_cast<std::size_t>(n));
+    }
+    return s;
+  }
+  // Per-point and per-cell fields.
+  std::vector<CellId> cells;
+  if (occ.has("MAILLE")) {
+    auto c = mesh.findCell(occ.text("MAILLE"));
+    if (!c) {
+      throw UserError(Diagnostic::fatal("GROUP_4",
+                                        fmt::format("the mesh has no cell named '{}'", occ.text("MAILLE")),
+                                        occ.locationOf("MAILLE")));
+    }
+    cells.push_back(*c);
+  } else if (occ.has("GROUP_MA")) {
+    const auto* group = mesh.cellGroup(occ.text("GROUP_MA"));
+    if (group == nullptr) {
+      throw UserError(Diagnostic::fatal(
+          "GROUP_1", fmt::format("the mesh has no cell group (GROUP_MA) '{}'", occ.text("GROUP_MA")),
+          occ.locationOf("GROUP_MA")));
+    }
+    cells = *group;
+  } else {
+    for (std::size_t c = 0;
+         c < (field.support() == FieldSupport::Cell ? field.entityCount() : field.cellCount()); ++c) {
+      cells.push_back(static_cast<CellId>(c));
+    }
+  }
+  if (field.support() == FieldSupport::Cell) {
+    for (CellId c : cells) {
+      s.entities.push_back(static_cast<std::size_t>(c));
+    }
+    s.single = cells.size() == 1 && !occ.has("TYPE_TEST");
+    s.label = cells.size() == 1 ? mesh.cellName(cells.front()) : "";
+    return s;
+  }
+  if (occ.has("POINT")) {
+    if (cells.size() != 1) {
+      throw UserError(Diagnostic::fatal(
+                          "RESU_4", fmt::format("POINT needs one cell; the selection holds {}", cells.size()),
+                          occ.locationOf("POINT"))
+                          .withNote("use MAILLE, or a GROUP_MA of one cell"));
+    }
+    const auto c = static_cast<std::size_t>(cells.front());
+    const auto p = occ.integer("POINT");
+    if (c >= field.cellCount() || p < 1 || p > field.pointCount(c)) {
+      throw UserError(Diagnostic::fatal(
+          "RESU_5",
+          fmt::format("cell {} has {} point(s) in this field; POINT={} does not exist",
+                      mesh.cellName(cells.front()), c < field.cellCount() ? field.pointCount(c) : 0, p),
+          occ.locationOf("POINT")));
+    }
+    if (occ.integerOr("SOUS_POINT", 1) != 1) {
+      throw UserError(Diagnostic::fatal("RESU_5", "SOUS_POINT other than 1 does not exist on solid elements",
+                                        occ.locationOf("SOUS_POINT")));
+    }
+    return {{field.firstPoint(c) + static_cast<std::size_t>(p - 1)},
+            true,
+            fmt::format("{} point {}", mesh.cellName(cells.front()), p)};
+  }
+  for (CellId c : cells) {
+    const auto uc = static_cast<std::size_t>(c);
+    if (uc >= field.cellCount()) {
+      continue;
+    }
+    for (int q = 0; q < field.pointCount(uc); ++q) {
+      s.entities.push_back(field.firstPoint(uc) + static_cast<std::size_t>(q));
+    }
+  }
+  return s;
+}
+
+double reduceValues(const Field& field, std::size_t component, const std::vector<std::size_t>& entities,
+                    const std::string& type, const KeywordTree& occ) {
+  bool any = false;
+  double r = 0.0;
+  for (std::size_t e : entities) {
+    if (!field.defined(e, component)) {
+      continue;
+    }
+    const double v = field.value(e, component);
+    if (!any) {
+      r = type == "SOMM_ABS" ? std::fabs(v) : v;
+      any = true;
+      continue;
+    }
+    if (type == "MIN") {
+      r = std::min(r, v);
+    } else if (type == "MAX") {
+      r = std::max(r, v);
+    } else if (type == "SOMM") {
+      r += v;
+    } else {
+      r += std::fabs(v);
+    }
+  }
+  if (!any) {
+    throw UserError(
+        Diagnostic::fatal("RESU_6", "the selection holds no value of the component", occ.location()));
+  }
+  return r;
+}
+
+} // namespace stella
