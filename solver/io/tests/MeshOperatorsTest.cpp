@@ -5,6 +5,7 @@
 #include "solver/io/MeshIO.hpp"
 #include "solver/io/tests/MeshTestUtil.hpp"
 #include "solver/job/BatchJob.hpp"
+#include "solver/mesh/MeshTransform.hpp"
 #include "solver/mesh/StructuredMesher.hpp"
 
 #include <gtest/gtest.h>
@@ -50,7 +51,7 @@ TEST(MeshOperators, LireMaillageInEveryFormat) {
                             "FIN()\n",
                             {{20, dir / "m.med"}, {21, dir / "m.mail"}, {22, dir / "m.msh"}});
   EXPECT_EQ(r.diagnostic, JobDiagnostic::Ok) << r.message;
-  EXPECT_NE(r.message.find("mesh BLOC: 3D, 27 nodes"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("mesh MA: 3D, 27 nodes"), std::string::npos) << r.message;
   EXPECT_NE(r.message.find("mesh MB: 3D, 27 nodes"), std::string::npos);
   EXPECT_NE(r.message.find("GROUP_MA XMAX"), std::string::npos);
 }
@@ -105,6 +106,31 @@ TEST(MeshOperators, DefiGroup) {
               {{20, dir / "m.med"}});
   EXPECT_NE(bad.message.find("DEFI_GROUP_1"), std::string::npos) << bad.message;
   EXPECT_NE(bad.message.find("NOPE"), std::string::npos);
+}
+
+TEST(MeshOperators, ModiCreaInfoAndImpr) {
+  const auto dir = testing::tempDir("modi_crea");
+  Mesh m = buildStructuredMesh({CellType::QUAD4, {2, 2, 1}, {1, 1, 1}, {0, 0, 0}});
+  reverseCell(m, m.cellGroup("YMAX")->front()); // a skin edge pointing inwards
+  writeMedMesh(dir / "m.med", m, "M");
+  const CommRun r =
+      runComm(dir, "modi",
+              "DEBUT()\n"
+              "MA = LIRE_MAILLAGE(UNITE=20)\n"
+              "MA = MODI_MAILLAGE(reuse=MA, MAILLAGE=MA, ORIE_PEAU=_F(GROUP_MA_PEAU=('YMAX', 'XMAX')))\n"
+              "MA = MODI_MAILLAGE(reuse=MA, MAILLAGE=MA, TRANSLATION=(1., 0.))\n"
+              "MQ = CREA_MAILLAGE(MAILLAGE=MA, LINE_QUAD=_F(TOUT='OUI'))\n"
+              "MACR_INFO_MAIL(MAILLAGE=MQ)\n"
+              "IMPR_RESU(FORMAT='MED', UNITE=80, RESU=_F(MAILLAGE=MQ))\n"
+              "FIN()\n",
+              {{20, dir / "m.med"}, {80, dir / "out.med"}});
+  EXPECT_EQ(r.diagnostic, JobDiagnostic::Ok) << r.message;
+  EXPECT_NE(r.message.find("ORIE_PEAU: 1 of 4 skin cells reoriented"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("QUAD8"), std::string::npos);
+  EXPECT_NE(r.message.find("aspect ratio"), std::string::npos);
+  const Mesh out = readMedMesh(dir / "out.med");
+  EXPECT_EQ(out.nodeCount(), 21);
+  EXPECT_DOUBLE_EQ(out.point(0)[0], 1.0);
 }
 
 } // namespace
