@@ -36,6 +36,9 @@ LinearStaticResult solveLinearStatic(const LinearStaticProblem& pb) {
       offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
     }
   }
+  for (const NodalSpring& sp : pb.springs) {
+    active[static_cast<std::size_t>(sp.node)] = true;
+  }
   auto numbering = std::make_shared<linalg::DofNumbering>(
       nodes, dim, std::span<const bool>(active.get(), static_cast<std::size_t>(nodes)));
   std::vector<std::pair<int, int>> couplings;
@@ -62,6 +65,12 @@ LinearStaticResult solveLinearStatic(const LinearStaticProblem& pb) {
                              cellCoordinates(pb.coordinates, b.connectivity.data() + c * n, n), kin);
       fem::stiffness(kin, d, ke);
       scatter.add(cell, ke, k.values());
+    }
+  }
+  for (const NodalSpring& sp : pb.springs) { // diagonal entries are always in the pattern
+    for (int c = 0; c < dim; ++c) {
+      const int dof = numbering->dof(sp.node, c);
+      k.add(dof, dof, sp.stiffness[static_cast<std::size_t>(c)]);
     }
   }
   Eigen::VectorXd f = Eigen::VectorXd::Zero(numbering->dofCount());

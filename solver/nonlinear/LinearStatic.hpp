@@ -10,6 +10,7 @@
 #include "solver/mesh/CellType.hpp"
 
 #include <Eigen/Dense>
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -27,6 +28,13 @@ struct ImposedDisplacement { // DDL_IMPO
   double value = 0.0;
 };
 
+// A discrete translation spring on one node (DIS_T / 2D_DIS_T on a POI1 cell, AFFE_CARA_ELEM
+// DISCRET K_T_D_N: stiffnesses along X, Y[, Z] in the global axes).
+struct NodalSpring {
+  int node = 0;
+  std::array<double, 3> stiffness{0.0, 0.0, 0.0};
+};
+
 struct PressureLoad { // PRES_REP on skin cells (normal from the skin's node order)
   CellBlock skin;
   double pressure = 0.0;
@@ -38,6 +46,7 @@ struct LinearStaticProblem {
   std::vector<CellBlock> volumes;
   behaviour::ElasticParameters material;
   std::vector<ImposedDisplacement> imposed;
+  std::vector<NodalSpring> springs;
   std::vector<PressureLoad> pressures;
   Eigen::VectorXd nodalForces; // FORCE_NODALE, nodeCount*dim (empty: none)
   linalg::SolverOptions solver;
