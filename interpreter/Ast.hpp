@@ -148,7 +148,7 @@ struct Module {
   std::shared_ptr<const SourceFile> file;
   // Memory of the expression nodes (declared before `body`, so destroyed after it).
   std::unique_ptr<std::pmr::monotonic_buffer_resource> arena =
-      std::make_unique<std::pmr::monotonic_buffer_resource>(1 << 16);
+      std::make_unique<std::pmr::monotonic_buffer_resource>(4096);
   std::vector<StmtPtr> body;
 };
 

@@ -103,90 +103,109 @@ void Evaluator::noteMutated(const Value& container) {
 
 namespace {
 
-// Does `from`'s content lead back to `target` (through lists, dicts, tuples and _F)?
-bool reaches(const Value& from, const void* target, std::unordered_set<const void*>& seen, long& budget,
-             int depth = 0) {
-  if (--budget < 0 || depth > 5000) {
-    return false;
-  }
-  const void* id = nullptr;
-  if (from.isList()) {
-    id = from.asList().get();
-  } else if (from.isDict()) {
-    id = from.asDict().get();
-  } else if (from.isTuple()) {
-    id = &from.items();
-  } else if (from.isFactor()) {
-    id = from.asFactor().get();
-  } else {
-    return false;
-  }
-  if (id == target) {
-    return true;
-  }
-  if (!seen.insert(id).second) {
-    return false;
-  }
-  if (from.isSequence()) {
-    for (const Value& v : from.items()) {
-      if (reaches(v, target, seen, budget, depth + 1)) {
-        return true;
+// One depth-first search over the containers reachable from the mutated lists and dicts; an edge
+// back to a container still on the search stack closes a cycle, which is broken by emptying a
+// list or dict of that cycle. Linear in the size of the reachable graph.
+class CycleBreaker {
+public:
+  void visit(const Value& v, int depth) {
+    const void* id = idOf(v);
+    if (id == nullptr || depth > 5000) {
+      return;
+    }
+    auto [it, inserted] = state_.emplace(id, OnStack);
+    if (!inserted) {
+      if (it->second == OnStack) {
+        markCycleTo(id);
+      }
+      return;
+    }
+    stack_.push_back(v);
+    if (v.isSequence()) {
+      for (const Value& item : v.items()) {
+        visit(item, depth + 1);
+      }
+    } else if (v.isDict()) {
+      for (const auto& kv : v.asDict()->items) {
+        visit(kv.first, depth + 1);
+        visit(kv.second, depth + 1);
+      }
+    } else {
+      for (const auto& kw : v.asFactor()->keywords) {
+        visit(*kw.value, depth + 1);
       }
     }
-  } else if (from.isDict()) {
-    for (const auto& kv : from.asDict()->items) {
-      if (reaches(kv.first, target, seen, budget, depth + 1) ||
-          reaches(kv.second, target, seen, budget, depth + 1)) {
-        return true;
+    stack_.pop_back();
+    it = state_.find(id);
+    it->second = Done;
+  }
+
+  void breakCycles() {
+    for (Value& v : toEmpty_) {
+      if (v.isList()) {
+        ValueList items;
+        items.swap(v.asList()->items);
+      } else {
+        std::vector<std::pair<Value, Value>> items;
+        items.swap(v.asDict()->items);
       }
     }
-  } else {
-    for (const auto& kw : from.asFactor()->keywords) {
-      if (reaches(*kw.value, target, seen, budget, depth + 1)) {
-        return true;
+    toEmpty_.clear();
+  }
+
+private:
+  enum State { OnStack, Done };
+
+  static const void* idOf(const Value& v) {
+    if (v.isList()) {
+      return v.asList().get();
+    }
+    if (v.isDict()) {
+      return v.asDict().get();
+    }
+    if (v.isTuple()) {
+      return &v.items();
+    }
+    if (v.isFactor()) {
+      return v.asFactor().get();
+    }
+    return nullptr;
+  }
+
+  // The cycle is the stack from `target` to the top: empty its last list or dict.
+  void markCycleTo(const void* target) {
+    for (auto it = stack_.rbegin(); it != stack_.rend(); ++it) {
+      if (it->isList() || it->isDict()) {
+        toEmpty_.push_back(*it);
+        return;
+      }
+      if (idOf(*it) == target) {
+        return;
       }
     }
   }
-  return false;
-}
+
+  std::unordered_map<const void*, State> state_;
+  std::vector<Value> stack_;
+  std::vector<Value> toEmpty_;
+};
 
 } // namespace
 
 Evaluator::~Evaluator() {
   globals_.clear();
-  long budget = 50'000'000; // cycle detection is bounded (destruction must not hang)
-  std::vector<std::shared_ptr<ListObject>> cyclicLists;
-  std::vector<std::shared_ptr<DictObject>> cyclicDicts;
+  CycleBreaker breaker;
   for (const auto& [id, weak] : mutatedLists_) {
     if (auto list = weak.lock()) {
-      std::unordered_set<const void*> seen;
-      for (const Value& v : list->items) {
-        if (reaches(v, id, seen, budget)) {
-          cyclicLists.push_back(list);
-          break;
-        }
-      }
+      breaker.visit(Value(list), 0);
     }
   }
   for (const auto& [id, weak] : mutatedDicts_) {
     if (auto dict = weak.lock()) {
-      std::unordered_set<const void*> seen;
-      for (const auto& kv : dict->items) {
-        if (reaches(kv.second, id, seen, budget) || reaches(kv.first, id, seen, budget)) {
-          cyclicDicts.push_back(dict);
-          break;
-        }
-      }
+      breaker.visit(Value(dict), 0);
     }
   }
-  for (auto& list : cyclicLists) {
-    ValueList items;
-    items.swap(list->items);
-  }
-  for (auto& dict : cyclicDicts) {
-    std::vector<std::pair<Value, Value>> items;
-    items.swap(dict->items);
-  }
+  breaker.breakCycles();
 }
 
 void Evaluator::raise(const Pos& pos, const std::string& id, const std::string& message,

@@ -87,7 +87,38 @@ private:
 
   ExprPtr node(ExprKind kind, Pos pos) {
     void* memory = arena_->allocate(sizeof(Expr), alignof(Expr));
-    return ExprPtr(new (memory) Expr(kind, pos, arena_));
+    ExprPtr e(new (memory) Expr(kind, pos, arena_));
+    e->items.reserve(childrenHint(kind)); // the arena never reuses a grown vector's old storage
+    return e;
+  }
+  static std::size_t childrenHint(ExprKind kind) {
+    switch (kind) {
+    case ExprKind::Unary:
+    case ExprKind::Not:
+    case ExprKind::Keyword:
+    case ExprKind::Attribute:
+    case ExprKind::Star:
+    case ExprKind::DoubleStar:
+    case ExprKind::FormattedValue:
+      return 1;
+    case ExprKind::Binary:
+    case ExprKind::Subscript:
+    case ExprKind::Compare:
+    case ExprKind::And:
+    case ExprKind::Or:
+      return 2;
+    case ExprKind::Conditional:
+    case ExprKind::Slice:
+    case ExprKind::CompFor:
+      return 3;
+    case ExprKind::Call:
+    case ExprKind::Tuple:
+    case ExprKind::List:
+    case ExprKind::Dict:
+      return 4;
+    default:
+      return 0;
+    }
   }
   ExprPtr finish(ExprPtr e);
 
@@ -907,7 +938,6 @@ ExprPtr Parser::parseCall(ExprPtr callee) {
   Pos open = cur_.pos;
   advance();
   ExprPtr call = node(ExprKind::Call, callee->pos);
-  call->items.reserve(4);
   call->items.push_back(std::move(callee));
   bool sawKeyword = false;
   while (!at(TokenKind::RParen)) {

@@ -36,9 +36,9 @@ void run(const std::shared_ptr<const SourceFile>& file) {
   testing::FakeHandler handler(false);
   InterpreterOptions options;
   options.whileIterationCap = 100;
-  options.stepBudget = 5000;
-  options.maxSequenceLength = 10000;
-  options.maxStringLength = 100000;
+  options.stepBudget = 1000;
+  options.maxSequenceLength = 1000;
+  options.maxStringLength = 10000;
   Interpreter interpreter(handler, sink, options);
   for (const auto& name : testing::fakeCommandNames()) {
     interpreter.defineCommand(name);
@@ -75,7 +75,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::string text(reinterpret_cast<const char*>(data), size);
   auto file = SourceFile::fromText("fuzz.comm", text);
   (void)dumpTokens(file);
-  (void)dumpAst(file);
   checkRoundTrip(file);
   run(file);
   if (size < 512) {
