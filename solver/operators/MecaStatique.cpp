@@ -7,6 +7,7 @@
 #include "solver/nonlinear/CommandInputs.hpp"
 #include "solver/nonlinear/ElasticSolve.hpp"
 #include "solver/nonlinear/ResultFields.hpp"
+#include "solver/nonlinear/ResultLoads.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 
@@ -87,6 +88,7 @@ Value runMecaStatique(OperatorCall& call) {
     msg << fmt::format("   stored NUME_ORDRE {} at INST {}: max |u| = {:.6e}\n", step.number, t,
                        s.displacement.size() ? s.displacement.cwiseAbs().maxCoeff() : 0.0);
   }
+  rememberLoads(result, excitations);
   return call.makeConcept(result);
 }
 

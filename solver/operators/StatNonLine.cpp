@@ -11,6 +11,7 @@
 #include "solver/nonlinear/CommandInputs.hpp"
 #include "solver/nonlinear/NewtonDriver.hpp"
 #include "solver/nonlinear/ResultFields.hpp"
+#include "solver/nonlinear/ResultLoads.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 
@@ -132,6 +133,7 @@ Value runStatNonLine(OperatorCall& call) {
   NewtonDriver driver(system, settings, msg);
   MechanicalState state = driver.initialState(times.front());
   store(*result, state, system, true);
+  rememberLoads(result, system.excitations());
   Value made = call.makeConcept(result);
   for (std::size_t i = 1; i < times.size(); ++i) {
     MechanicalState next;
