@@ -58,7 +58,9 @@ std::span<double> Field::entity(std::size_t e) {
   return std::span<double>(values_).subspan(e * components_.size(), components_.size());
 }
 
-void Field::markPartial() { defined_.assign(values_.size(), 0); }
+void Field::markPartial() {
+  defined_.assign(values_.size(), 0);
+}
 
 bool Field::defined(std::size_t entity, std::size_t component) const {
   return defined_.empty() || defined_[entity * components_.size() + component] != 0;

@@ -42,8 +42,12 @@ public:
   int pointCount(std::size_t cell) const;
   std::size_t firstPoint(std::size_t cell) const { return offsets_[cell]; }
 
-  double value(std::size_t entity, std::size_t component) const { return values_[entity * components_.size() + component]; }
-  double& value(std::size_t entity, std::size_t component) { return values_[entity * components_.size() + component]; }
+  double value(std::size_t entity, std::size_t component) const {
+    return values_[entity * components_.size() + component];
+  }
+  double& value(std::size_t entity, std::size_t component) {
+    return values_[entity * components_.size() + component];
+  }
   // All components of one entity.
   std::span<const double> entity(std::size_t e) const;
   std::span<double> entity(std::size_t e);

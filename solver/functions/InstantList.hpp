@@ -14,10 +14,10 @@ struct FailurePolicy {
   enum class Action { Stop, Subdivide, AdaptPenalty };
   Event event = Event::Error;
   Action action = Action::Subdivide;
-  int subdivisions = 4;      // SUBD_PAS
-  int maxLevel = 3;          // SUBD_NIVEAU
-  double minStep = 0.0;      // SUBD_PAS_MINI
-  double maxPenetration = 0; // PENE_MAXI
+  int subdivisions = 4;           // SUBD_PAS
+  int maxLevel = 3;               // SUBD_NIVEAU
+  double minStep = 0.0;           // SUBD_PAS_MINI
+  double maxPenetration = 0;      // PENE_MAXI
   double maxCoefficient = 1.0e12; // COEF_MAXI
 };
 

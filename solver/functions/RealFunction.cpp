@@ -29,26 +29,28 @@ double TabulatedFunction::evaluate(std::span<const double> values) const {
   if (n == 1) {
     return y_[0];
   }
-  auto outside = [&](Extension e, std::size_t segment, const char* side) {
+  auto outside = [&](Extension e, bool leftSide) {
+    std::size_t segment = leftSide ? 0 : n - 2;
     if (e == Extension::Constant) {
-      return segment == 0 ? y_.front() : y_.back();
+      return leftSide ? y_.front() : y_.back();
     }
     if (e == Extension::Linear) {
       return interpolate(segment, x);
     }
-    throw UserError(Diagnostic::fatal("FUNCTION_1",
-                                      fmt::format("the function {} is evaluated at {} = {}, {} its domain [{}, {}]",
-                                                  name.empty() ? "(unnamed)" : name, parameter_, x, side, x_.front(),
-                                                  x_.back()))
-                        .withNote(fmt::format("extend it with {}='CONSTANT' or 'LINEAIRE' in DEFI_FONCTION, or widen "
-                                              "its abscissas",
-                                              segment == 0 ? "PROL_GAUCHE" : "PROL_DROITE")));
+    throw UserError(
+        Diagnostic::fatal("FUNCTION_1",
+                          fmt::format("the function {} is evaluated at {} = {}, {} its domain [{}, {}]",
+                                      name.empty() ? "(unnamed)" : name, parameter_, x,
+                                      leftSide ? "left of" : "right of", x_.front(), x_.back()))
+            .withNote(fmt::format("extend it with {}='CONSTANT' or 'LINEAIRE' in DEFI_FONCTION, or widen "
+                                  "its abscissas",
+                                  leftSide ? "PROL_GAUCHE" : "PROL_DROITE")));
   };
   if (x < x_.front()) {
-    return outside(left, 0, "left of");
+    return outside(left, true);
   }
   if (x > x_.back()) {
-    return outside(right, n - 2, "right of");
+    return outside(right, false);
   }
   auto it = std::upper_bound(x_.begin(), x_.end(), x);
   std::size_t i = it == x_.end() ? n - 2 : static_cast<std::size_t>(it - x_.begin()) - 1;
@@ -57,7 +59,8 @@ double TabulatedFunction::evaluate(std::span<const double> values) const {
 }
 
 FormulaFunction::FormulaFunction(const std::string& text, std::vector<std::string> parameters,
-                                 std::vector<std::pair<std::string, double>> constants, const SourceLocation& origin)
+                                 std::vector<std::pair<std::string, double>> constants,
+                                 const SourceLocation& origin)
     : formula_(text, std::move(parameters), std::move(constants), origin) {}
 
 } // namespace stella

@@ -59,9 +59,9 @@ fs::path makeWorkDirectory(const RunOptions& options) {
   }
   std::string pattern = (fs::temp_directory_path() / "stella-run-XXXXXX").string();
   if (mkdtemp(pattern.data()) == nullptr) {
-    throw UserError(Diagnostic::fatal("RUN_1", "cannot create a work directory in " +
-                                                   fs::temp_directory_path().string())
-                        .withNote("set TMPDIR to a writable directory or pass --work-dir"));
+    throw UserError(
+        Diagnostic::fatal("RUN_1", "cannot create a work directory in " + fs::temp_directory_path().string())
+            .withNote("set TMPDIR to a writable directory or pass --work-dir"));
   }
   return fs::path(pattern);
 }
@@ -106,7 +106,8 @@ void writeTimingSummary(std::ostream& mess, const Session& session) {
   for (const auto& t : timings) {
     ++n;
     double share = total > 0 ? 100.0 * t.seconds / total : 0.0;
-    mess << fmt::format("  {:<5} {:<22} {:<40} {:>10.3f} {:>6.1f}%\n", n, t.command, t.location, t.seconds, share);
+    mess << fmt::format("  {:<5} {:<22} {:<40} {:>10.3f} {:>6.1f}%\n", n, t.command, t.location, t.seconds,
+                        share);
   }
   mess << fmt::format("  {:<5} {:<22} {:<40} {:>10.3f}\n", "", "total", "", total);
 }
@@ -207,14 +208,16 @@ JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
     for (const auto* d : missing) {
       const auto& opened = session->openedUnits();
       if (std::find(opened.begin(), opened.end(), d->unit) == opened.end()) {
-        session->report(Diagnostic::alarm("RUN_2", fmt::format("the data file {} declared for unit {} ({}) does not "
-                                                               "exist; the study never opened it",
-                                                               d->source.string(), d->unit, d->origin)));
+        session->report(
+            Diagnostic::alarm("RUN_2", fmt::format("the data file {} declared for unit {} ({}) does not "
+                                                   "exist; the study never opened it",
+                                                   d->source.string(), d->unit, d->origin)));
       }
     }
     if (spec.saveBase) {
-      session->report(Diagnostic::alarm("RUN_3", "saving the concept database (R base) is not implemented yet; the "
-                                                 "other result files are written"));
+      session->report(Diagnostic::alarm("RUN_3",
+                                        "saving the concept database (R base) is not implemented yet; the "
+                                        "other result files are written"));
     }
     writeTimingSummary(mess, *session);
     counts = session->counts();
@@ -243,7 +246,8 @@ JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
     auto it = spec.results.find(unit);
     if (it != spec.results.end()) {
       fs::create_directories(it->second.parent_path());
-      fs::copy_file(work / ("fort." + std::to_string(unit)), it->second, fs::copy_options::overwrite_existing);
+      fs::copy_file(work / ("fort." + std::to_string(unit)), it->second,
+                    fs::copy_options::overwrite_existing);
       written.push_back(it->second);
     }
   }

@@ -14,25 +14,25 @@
 namespace stella {
 
 struct RunOptions {
-  std::filesystem::path workDirectory; // empty: a new temporary directory
+  std::filesystem::path workDirectory;   // empty: a new temporary directory
   std::filesystem::path outputDirectory; // empty: relative result paths are relative to the export
-  bool referenceOnly = false;  // VALE_CALC lines are information only
+  bool referenceOnly = false;            // VALE_CALC lines are information only
   bool keepWorkDirectory = false;
-  bool echo = true;            // copy the message file to standard output as it is written
-  std::string commandLine;     // for the message file header
+  bool echo = true;        // copy the message file to standard output as it is written
+  std::string commandLine; // for the message file header
 };
 
 struct JobResult {
   JobDiagnostic diagnostic = JobDiagnostic::AbnormalAbort;
   std::vector<std::filesystem::path> resultFiles; // copied back
-  std::filesystem::path workDirectory;             // kept when the run failed
+  std::filesystem::path workDirectory;            // kept when the run failed
 };
 
 JobResult runExport(const Export& study, const RunOptions& options);
 
 // `stella run FILE.comm --unit 20=mesh.med`: outputs beside the command file
 // (FILE.mess, FILE.resu, FILE.rmed for unit 80, FILE.fort.<N> for other units written).
-JobResult runCommandFile(const std::filesystem::path& commandFile, const std::map<int, std::filesystem::path>& units,
-                         const RunOptions& options);
+JobResult runCommandFile(const std::filesystem::path& commandFile,
+                         const std::map<int, std::filesystem::path>& units, const RunOptions& options);
 
 } // namespace stella

@@ -33,7 +33,8 @@ ExportEntry parseFileLine(const std::vector<std::string>& w, const SourceLocatio
                           const std::filesystem::path& base) {
   if (w.size() != 5) {
     throw UserError(Diagnostic::fatal("EXPORT_2",
-                                      "an " + w[0] + " line needs 4 fields: type, path, D/R/C flags and unit; found " +
+                                      "an " + w[0] +
+                                          " line needs 4 fields: type, path, D/R/C flags and unit; found " +
                                           std::to_string(w.size() - 1),
                                       at)
                         .withNote("example: F mmed mesh.med D 20"));
@@ -52,8 +53,9 @@ ExportEntry parseFileLine(const std::vector<std::string>& w, const SourceLocatio
     } else if (c == 'C') {
       e.compressed = true;
     } else {
-      throw UserError(Diagnostic::fatal("EXPORT_3", "unknown flag '" + std::string(1, c) + "' in '" + w[3] + "'", at)
-                          .withNote("the flags are D (data), R (result) and C (compressed), e.g. D, R, DR, RC"));
+      throw UserError(
+          Diagnostic::fatal("EXPORT_3", "unknown flag '" + std::string(1, c) + "' in '" + w[3] + "'", at)
+              .withNote("the flags are D (data), R (result) and C (compressed), e.g. D, R, DR, RC"));
     }
   }
   if (!e.data && !e.result) {
@@ -62,16 +64,19 @@ ExportEntry parseFileLine(const std::vector<std::string>& w, const SourceLocatio
   int unit = -1;
   auto [ptr, ec] = std::from_chars(w[4].data(), w[4].data() + w[4].size(), unit);
   if (ec != std::errc() || ptr != w[4].data() + w[4].size() || unit < 0 || unit > 99) {
-    throw UserError(Diagnostic::fatal("EXPORT_4", "the unit '" + w[4] + "' is not an integer between 0 and 99", at));
+    throw UserError(
+        Diagnostic::fatal("EXPORT_4", "the unit '" + w[4] + "' is not an integer between 0 and 99", at));
   }
   e.unit = unit;
   if (e.data && e.type != "comm" && (unit == 6 || unit == 15)) {
-    throw UserError(Diagnostic::fatal("EXPORT_5", "units 6 and 15 are reserved and cannot hold a data file", at)
-                        .withNote("unit 6 is the message file; give the data file another unit, e.g. 20"));
+    throw UserError(
+        Diagnostic::fatal("EXPORT_5", "units 6 and 15 are reserved and cannot hold a data file", at)
+            .withNote("unit 6 is the message file; give the data file another unit, e.g. 20"));
   }
-  if (e.compressed) {
-    throw UserError(Diagnostic::fatal("EXPORT_6", "compressed files (flag C) are not implemented yet", at)
-                        .withNote("uncompress the file and drop the C flag"));
+  if (e.compressed && e.data) {
+    throw UserError(
+        Diagnostic::fatal("EXPORT_6", "compressed data files (flag C) are not implemented yet", at)
+            .withNote("uncompress the file and drop the C flag"));
   }
   return e;
 }
@@ -101,8 +106,9 @@ Export Export::read(const std::filesystem::path& file) {
       ExportEntry e = parseFileLine(w, at, base);
       e.line = n;
       if (e.type == "comm" && e.data && !std::filesystem::exists(e.path)) {
-        throw UserError(Diagnostic::fatal("EXPORT_7", "the command file '" + e.pathAsWritten + "' does not exist", at)
-                            .withNote("paths are relative to the export's folder " + base.string()));
+        throw UserError(
+            Diagnostic::fatal("EXPORT_7", "the command file '" + e.pathAsWritten + "' does not exist", at)
+                .withNote("paths are relative to the export's folder " + base.string()));
       }
       ex.entries.push_back(std::move(e));
     } else {

@@ -1,8 +1,8 @@
 #pragma once
 // A `.export` run file, as code_aster users write them (reference §4.1):
-//   P <parameter> <value...>         e.g. P time_limit 120, P testlist verification, P expected_diag NOOK_TEST_RESU
-//   A <args>                         extra arguments
-//   F|R <type> <path> <D|R|C...> <unit>   F file, R directory; D data, R result, C compressed
+//   P <parameter> <value...>         e.g. P time_limit 120, P testlist verification, P expected_diag
+//   NOOK_TEST_RESU A <args>                         extra arguments F|R <type> <path> <D|R|C...> <unit>   F
+//   file, R directory; D data, R result, C compressed
 // Paths are relative to the export's folder.
 
 #include <filesystem>
@@ -13,13 +13,13 @@
 namespace stella {
 
 struct ExportEntry {
-  bool directory = false; // R line
-  std::string type;       // comm, mmed, mail, msh, mess, resu, rmed, base, nom, ...
+  bool directory = false;     // R line
+  std::string type;           // comm, mmed, mail, msh, mess, resu, rmed, base, nom, ...
   std::filesystem::path path; // absolute
   std::string pathAsWritten;
   bool data = false;
   bool result = false;
-  bool compressed = false;
+  bool compressed = false; // results are written uncompressed; compressed data is refused
   int unit = 0;
   int line = 0; // in the export file
 };

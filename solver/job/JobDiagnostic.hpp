@@ -13,13 +13,13 @@ struct SessionCounts;
 
 enum class JobDiagnostic {
   Ok,
-  Alarm,          // <A>_ALARM
-  NookTestResu,   // NOOK_TEST_RESU
-  NoTestResu,     // NO_TEST_RESU
-  SyntaxError,    // <F>_SYNTAX_ERROR
-  Error,          // <F>_ERROR
-  NoConvergence,  // <S>_NO_CONVERGENCE
-  AbnormalAbort   // <F>_ABNORMAL_ABORT
+  Alarm,         // <A>_ALARM
+  NookTestResu,  // NOOK_TEST_RESU
+  NoTestResu,    // NO_TEST_RESU
+  SyntaxError,   // <F>_SYNTAX_ERROR
+  Error,         // <F>_ERROR
+  NoConvergence, // <S>_NO_CONVERGENCE
+  AbnormalAbort  // <F>_ABNORMAL_ABORT
 };
 
 // `isTestcase`: the export has a `P testlist` line (a test case must print OK/NOOK lines).

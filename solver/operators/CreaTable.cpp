@@ -11,9 +11,9 @@ namespace {
 Value runCreaTable(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
   if (kw.has("FONCTION")) {
-    throw UserError(Diagnostic::fatal("TABLE_4", "CREA_TABLE/FONCTION is not implemented yet",
-                                      kw.locationOf("FONCTION"))
-                        .withNote("build the table with LISTE=_F(PARA=..., LISTE_R=...)"));
+    throw UserError(
+        Diagnostic::fatal("TABLE_4", "CREA_TABLE/FONCTION is not implemented yet", kw.locationOf("FONCTION"))
+            .withNote("build the table with LISTE=_F(PARA=..., LISTE_R=...)"));
   }
   auto table = std::make_shared<Table>();
   table->title = kw.textOr("TITRE", "");
@@ -38,7 +38,8 @@ Value runCreaTable(OperatorCall& call) {
       for (std::size_t i = 0; i < cells.size(); ++i) {
         std::int64_t line = lines->values[i].asInt();
         if (line < 1) {
-          throw UserError(Diagnostic::fatal("TABLE_5", "NUME_LIGN numbers start at 1", column.locationOf("NUME_LIGN")));
+          throw UserError(
+              Diagnostic::fatal("TABLE_5", "NUME_LIGN numbers start at 1", column.locationOf("NUME_LIGN")));
         }
         if (placed.size() < static_cast<std::size_t>(line)) {
           placed.resize(static_cast<std::size_t>(line));

@@ -14,7 +14,8 @@ namespace stella {
 namespace {
 
 Extension extension(const std::string& text) {
-  return text == "CONSTANT" ? Extension::Constant : (text == "LINEAIRE" ? Extension::Linear : Extension::Excluded);
+  return text == "CONSTANT" ? Extension::Constant
+                            : (text == "LINEAIRE" ? Extension::Linear : Extension::Excluded);
 }
 
 std::vector<double> listValues(const KeywordTree& kw, const std::string& name) {
@@ -27,10 +28,10 @@ void readPoints(const KeywordTree& kw, std::vector<double>& x, std::vector<doubl
   if (kw.has("VALE")) {
     std::vector<double> pairs = kw.reals("VALE");
     if (pairs.size() % 2 != 0) {
-      throw UserError(Diagnostic::fatal("FUNCTION_2",
-                                        fmt::format("VALE holds {} numbers; it needs pairs (x1, y1, x2, y2, ...)",
-                                                    pairs.size()),
-                                        kw.locationOf("VALE")));
+      throw UserError(Diagnostic::fatal(
+          "FUNCTION_2",
+          fmt::format("VALE holds {} numbers; it needs pairs (x1, y1, x2, y2, ...)", pairs.size()),
+          kw.locationOf("VALE")));
     }
     for (std::size_t i = 0; i < pairs.size(); i += 2) {
       x.push_back(pairs[i]);
@@ -48,8 +49,8 @@ void readPoints(const KeywordTree& kw, std::vector<double>& x, std::vector<doubl
                                       kw.locationOf(which)));
   }
   if (x.size() != y.size()) {
-    throw UserError(Diagnostic::fatal("FUNCTION_2",
-                                      fmt::format("{} abscissas for {} ordinates", x.size(), y.size()), kw.location()));
+    throw UserError(Diagnostic::fatal(
+        "FUNCTION_2", fmt::format("{} abscissas for {} ordinates", x.size(), y.size()), kw.location()));
   }
 }
 
@@ -58,11 +59,12 @@ void orderAbscissas(const KeywordTree& kw, std::vector<double>& x, std::vector<d
   if (check) {
     for (std::size_t i = 1; i < x.size(); ++i) {
       if (!(x[i] > x[i - 1])) {
-        throw UserError(Diagnostic::fatal("FUNCTION_4",
-                                          fmt::format("the abscissas must increase strictly: x[{}] = {} follows {}",
-                                                      i + 1, x[i], x[i - 1]),
-                                          kw.location())
-                            .withNote("sort the points, or give VERIF='NON' to have them sorted"));
+        throw UserError(
+            Diagnostic::fatal("FUNCTION_4",
+                              fmt::format("the abscissas must increase strictly: x[{}] = {} follows {}",
+                                          i + 1, x[i], x[i - 1]),
+                              kw.location())
+                .withNote("sort the points, or give VERIF='NON' to have them sorted"));
       }
     }
     return;
@@ -92,9 +94,12 @@ Value runDefiFonction(OperatorCall& call) {
   }
   bool logX = interpolation.front() == "LOG";
   bool logY = interpolation.back() == "LOG";
-  auto positive = [](const std::vector<double>& v) { return std::all_of(v.begin(), v.end(), [](double t) { return t > 0; }); };
+  auto positive = [](const std::vector<double>& v) {
+    return std::all_of(v.begin(), v.end(), [](double t) { return t > 0; });
+  };
   if ((logX && !positive(x)) || (logY && !positive(y))) {
-    throw UserError(Diagnostic::fatal("FUNCTION_5", "INTERPOL='LOG' needs positive values", kw.locationOf("INTERPOL")));
+    throw UserError(
+        Diagnostic::fatal("FUNCTION_5", "INTERPOL='LOG' needs positive values", kw.locationOf("INTERPOL")));
   }
   auto f = std::make_shared<TabulatedFunction>(kw.text("NOM_PARA"), std::move(x), std::move(y));
   f->logX = logX;

@@ -27,19 +27,21 @@ void appendInterval(const KeywordTree& interval, std::vector<double>& values) {
     double n = (to - from) / step;
     count = std::llround(n);
     if (step <= 0 || count < 1 || std::fabs(n - static_cast<double>(count)) > 1.0e-6 * std::max(1.0, n)) {
-      throw UserError(Diagnostic::fatal("LIST_2",
-                                        fmt::format("PAS = {} does not divide the interval [{}, {}] into a whole "
-                                                    "number of steps",
-                                                    step, from, to),
-                                        interval.locationOf("PAS"))
-                          .withNote("use NOMBRE, or a step that divides the interval"));
+      throw UserError(
+          Diagnostic::fatal("LIST_2",
+                            fmt::format("PAS = {} does not divide the interval [{}, {}] into a whole "
+                                        "number of steps",
+                                        step, from, to),
+                            interval.locationOf("PAS"))
+              .withNote("use NOMBRE, or a step that divides the interval"));
     }
   }
   if (count < 1) {
     throw UserError(Diagnostic::fatal("LIST_3", "NOMBRE must be at least 1", interval.locationOf("NOMBRE")));
   }
   for (std::int64_t i = 1; i <= count; ++i) {
-    values.push_back(i == count ? to : from + (to - from) * static_cast<double>(i) / static_cast<double>(count));
+    values.push_back(i == count ? to
+                                : from + (to - from) * static_cast<double>(i) / static_cast<double>(count));
   }
 }
 

@@ -12,8 +12,8 @@ namespace {
 Value runFormule(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
   if (kw.has("VALE_C")) {
-    throw UserError(Diagnostic::fatal("FUNCTION_3", "FORMULE/VALE_C (complex formulas) is not implemented yet",
-                                      kw.locationOf("VALE_C")));
+    throw UserError(Diagnostic::fatal(
+        "FUNCTION_3", "FORMULE/VALE_C (complex formulas) is not implemented yet", kw.locationOf("VALE_C")));
   }
   std::vector<std::pair<std::string, double>> constants;
   for (const SimpleKeyword& k : kw.simples()) {
@@ -22,8 +22,9 @@ Value runFormule(OperatorCall& call) {
     }
     if (k.values.size() != 1 || !k.values.front().isNumber()) {
       throw UserError(Diagnostic::fatal("FUNCTION_6",
-                                        "FORMULE: the constant " + k.name + " must be a number; other kinds of "
-                                                                            "constants are not implemented yet",
+                                        "FORMULE: the constant " + k.name +
+                                            " must be a number; other kinds of "
+                                            "constants are not implemented yet",
                                         k.location));
     }
     constants.emplace_back(k.name, k.values.front().asReal());

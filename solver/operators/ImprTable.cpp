@@ -52,9 +52,10 @@ Table selection(const Table& table, const KeywordTree& kw) {
   for (const auto& name : names) {
     const Table::Column* c = table.column(name);
     if (c == nullptr) {
-      throw UserError(Diagnostic::fatal("TABLE_1", fmt::format("NOM_PARA: the table has no parameter '{}'", name),
-                                        kw.locationOf("NOM_PARA"))
-                          .withNote(fmt::format("its parameters are: {}", fmt::join(table.columnNames(), ", "))));
+      throw UserError(
+          Diagnostic::fatal("TABLE_1", fmt::format("NOM_PARA: the table has no parameter '{}'", name),
+                            kw.locationOf("NOM_PARA"))
+              .withNote(fmt::format("its parameters are: {}", fmt::join(table.columnNames(), ", "))));
     }
     ValueList cells;
     for (std::size_t r : rows) {
@@ -85,11 +86,12 @@ Value runImprTable(OperatorCall& call) {
   } else if (unit == 6) {
     call.session.message() << text << "\n";
   } else {
-    std::ofstream out(call.session.unitPath(static_cast<int>(unit), kw.locationOf("UNITE"), false), std::ios::app);
+    std::ofstream out(call.session.unitPath(static_cast<int>(unit), kw.locationOf("UNITE"), false),
+                      std::ios::app);
     out << text << "\n";
   }
-  call.session.message() << "  Table " << source->name << " printed to unit " << unit << " (" << shown.rowCount()
-                         << " rows)\n";
+  call.session.message() << "  Table " << source->name << " printed to unit " << unit << " ("
+                         << shown.rowCount() << " rows)\n";
   return Value();
 }
 

@@ -39,9 +39,11 @@ Value runTestTable(OperatorCall& call) {
   const std::string para = kw.text("NOM_PARA");
   const Table::Column* col = table->column(para);
   if (col == nullptr) {
-    throw UserError(Diagnostic::fatal("TABLE_1", fmt::format("the table {} has no parameter '{}'", tableConcept->name, para),
-                                      kw.locationOf("NOM_PARA"))
-                        .withNote(fmt::format("its parameters are: {}", fmt::join(table->columnNames(), ", "))));
+    throw UserError(
+        Diagnostic::fatal("TABLE_1",
+                          fmt::format("the table {} has no parameter '{}'", tableConcept->name, para),
+                          kw.locationOf("NOM_PARA"))
+            .withNote(fmt::format("its parameters are: {}", fmt::join(table->columnNames(), ", "))));
   }
   std::vector<std::size_t> rows = filterRows(*table, kw.occurrences("FILTRE"));
   std::vector<double> values;
@@ -52,13 +54,14 @@ Value runTestTable(OperatorCall& call) {
   }
   const std::string type = kw.textOr("TYPE_TEST", "");
   if (values.empty() || (type.empty() && values.size() != 1)) {
-    throw UserError(Diagnostic::fatal("TABLE_3",
-                                      fmt::format("the filters leave {} numeric value(s) of {} in table {}; exactly "
-                                                  "one is needed",
-                                                  values.size(), para, tableConcept->name),
-                                      call.location)
-                        .withNote(values.empty() ? "check the FILTRE values against the table (IMPR_TABLE prints it)"
-                                                 : "add a FILTRE, or TYPE_TEST='MIN', 'MAX', 'SOMM' or 'SOMM_ABS'"));
+    throw UserError(
+        Diagnostic::fatal("TABLE_3",
+                          fmt::format("the filters leave {} numeric value(s) of {} in table {}; exactly "
+                                      "one is needed",
+                                      values.size(), para, tableConcept->name),
+                          call.location)
+            .withNote(values.empty() ? "check the FILTRE values against the table (IMPR_TABLE prints it)"
+                                     : "add a FILTRE, or TYPE_TEST='MIN', 'MAX', 'SOMM' or 'SOMM_ABS'"));
   }
   double computed = type.empty() ? values.front() : reduce(type, values);
   if (kw.textOr("VALE_ABS", "NON") == "OUI") {
@@ -69,9 +72,9 @@ Value runTestTable(OperatorCall& call) {
     header.emplace_back("TYPE_TEST", type);
   }
   for (const auto& f : kw.occurrences("FILTRE")) {
-    std::string value = f.has("VALE") ? Value(f.real("VALE")).repr()
-                                      : (f.has("VALE_I") ? std::to_string(f.integer("VALE_I"))
-                                                         : f.textOr("VALE_K", ""));
+    std::string value =
+        f.has("VALE") ? Value(f.real("VALE")).repr()
+                      : (f.has("VALE_I") ? std::to_string(f.integer("VALE_I")) : f.textOr("VALE_K", ""));
     header.emplace_back(f.text("NOM_PARA"), f.textOr("CRIT_COMP", "EQ") + " " + value);
   }
   reportTest(call.session, header, valueTestFromKeywords(kw, computed, para));

@@ -119,9 +119,10 @@ std::vector<std::size_t> filterRows(const Table& table, const std::vector<Keywor
     const std::string para = f.text("NOM_PARA");
     const Table::Column* col = table.column(para);
     if (col == nullptr) {
-      throw UserError(Diagnostic::fatal("TABLE_1", fmt::format("the table has no parameter '{}'", para),
-                                        f.locationOf("NOM_PARA"))
-                          .withNote(fmt::format("its parameters are: {}", fmt::join(table.columnNames(), ", "))));
+      throw UserError(
+          Diagnostic::fatal("TABLE_1", fmt::format("the table has no parameter '{}'", para),
+                            f.locationOf("NOM_PARA"))
+              .withNote(fmt::format("its parameters are: {}", fmt::join(table.columnNames(), ", "))));
     }
     rows = applyFilter(*col, rows, f);
   }

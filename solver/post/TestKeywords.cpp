@@ -8,11 +8,13 @@ namespace stella {
 namespace {
 
 void refuse(const KeywordTree& kw, const std::string& name, const std::string& why) {
-  throw UserError(Diagnostic::fatal("TEST_1", name + ": " + why + " is not implemented yet", kw.locationOf(name)));
+  throw UserError(
+      Diagnostic::fatal("TEST_1", name + ": " + why + " is not implemented yet", kw.locationOf(name)));
 }
 
 // The single real of VALE_CALC / VALE_CALC_I (or VALE_REFE / VALE_REFE_I).
-std::optional<double> singleValue(const KeywordTree& kw, const std::string& realName, const std::string& intName) {
+std::optional<double> singleValue(const KeywordTree& kw, const std::string& realName,
+                                  const std::string& intName) {
   for (const std::string& name : {realName, intName}) {
     if (const SimpleKeyword* k = kw.simple(name)) {
       if (k->values.size() != 1) {

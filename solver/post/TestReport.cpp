@@ -15,7 +15,9 @@ std::string pad(const std::string& s, std::size_t width) {
 }
 
 // The error and tolerance columns: two significant digits, like "4.8E-11%".
-std::string shortNumber(double x) { return x == 0.0 ? "0.0" : fmt::format("{:.2G}", x); }
+std::string shortNumber(double x) {
+  return x == 0.0 ? "0.0" : fmt::format("{:.2G}", x);
+}
 
 struct Comparison {
   bool ok;
@@ -76,14 +78,15 @@ TestOutcome runValueTest(const ValueTest& test, bool referenceOnly) {
   }
   auto line = [&](const std::string& status, const std::string& kind, const std::string& ref,
                   const std::string& value, const std::string& error, const std::string& tole) {
-    std::string s = pad(status, 4) + " " + pad(kind, 16) + " " + pad(test.legend, 16) + " " + pad(ref, width) + " " +
-                    pad(value, width) + " " + pad(error, 16) + " " + tole;
+    std::string s = pad(status, 4) + " " + pad(kind, 16) + " " + pad(test.legend, 16) + " " +
+                    pad(ref, width) + " " + pad(value, width) + " " + pad(error, 16) + " " + tole;
     s.erase(s.find_last_not_of(' ') + 1);
     return s + "\n";
   };
   out.text += line("", "REFERENCE", "VALE_REFE", "VALE_CALC", "ERREUR", "TOLE");
   if (test.valeCalc) {
-    Comparison c = compare(*test.valeCalc, test.computed, test.toleMachine, test.absolute, test.ordreGrandeur);
+    Comparison c =
+        compare(*test.valeCalc, test.computed, test.toleMachine, test.absolute, test.ordreGrandeur);
     std::string status = referenceOnly ? " -" : (c.ok ? " OK" : "NOOK");
     out.text += line(status, "NON_REGRESSION", testNumber(*test.valeCalc), computed, c.error, c.tolerance);
     if (!referenceOnly) {

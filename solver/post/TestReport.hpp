@@ -20,8 +20,8 @@ struct ValueTest {
   std::optional<double> valeRefe;
   std::string reference; // ANALYTIQUE, ...; empty when no reference line
   double precision = 1.0e-3;
-  bool absolute = false;       // CRITERE='ABSOLU'
-  double ordreGrandeur = 1.0;  // ORDRE_GRANDEUR
+  bool absolute = false;      // CRITERE='ABSOLU'
+  double ordreGrandeur = 1.0; // ORDRE_GRANDEUR
 };
 
 struct TestOutcome {

@@ -46,8 +46,7 @@ private:
 
 // Data of a concept, typed: returns the concept's data as T or throws UserError naming the
 // keyword when the concept holds no such data (e.g. a concept made by `stella check`).
-template <class T>
-std::shared_ptr<T> conceptData(const std::shared_ptr<Concept>& c) {
+template <class T> std::shared_ptr<T> conceptData(const std::shared_ptr<Concept>& c) {
   return std::dynamic_pointer_cast<T>(c->data);
 }
 
@@ -55,6 +54,6 @@ std::shared_ptr<T> conceptData(const std::shared_ptr<Concept>& c) {
 
 #define STELLA_OPERATOR_CONCAT2(a, b) a##b
 #define STELLA_OPERATOR_CONCAT(a, b) STELLA_OPERATOR_CONCAT2(a, b)
-#define STELLA_OPERATOR(NAME, FUNCTION)                                                            \
-  static const bool STELLA_OPERATOR_CONCAT(stellaOperatorRegistered_, __LINE__) =                  \
+#define STELLA_OPERATOR(NAME, FUNCTION)                                                                      \
+  static const bool STELLA_OPERATOR_CONCAT(stellaOperatorRegistered_, __LINE__) =                            \
       ::stella::OperatorRegistry::instance().add(NAME, FUNCTION, __FILE__)

@@ -21,7 +21,9 @@ std::string frameLine(const std::string& text) {
   return line + "!\n";
 }
 
-std::string frameRule() { return " !" + std::string(frameWidth - 3, '-') + "!\n"; }
+std::string frameRule() {
+  return " !" + std::string(frameWidth - 3, '-') + "!\n";
+}
 
 // The located diagnostic as lines inside a code_aster-style frame, so that tools reading the
 // message file (regexes on "<A>", "<F>"...) and users see the same thing.
@@ -59,7 +61,9 @@ Session::Session(const Catalog& catalog, std::ostream& message, std::ostream& re
 
 Session::~Session() = default;
 
-void Session::declareUnit(int unit, std::filesystem::path path) { units_[unit] = std::move(path); }
+void Session::declareUnit(int unit, std::filesystem::path path) {
+  units_[unit] = std::move(path);
+}
 
 std::filesystem::path Session::unitPath(int unit, const SourceLocation& at, bool forReading) const {
   auto it = units_.find(unit);
@@ -71,12 +75,12 @@ std::filesystem::path Session::unitPath(int unit, const SourceLocation& at, bool
       for (const auto& [u, p] : units_) {
         declared += (declared.empty() ? "" : ", ") + std::to_string(u) + " (" + p.filename().string() + ")";
       }
-      throw UserError(Diagnostic::fatal("UNIT_1", fmt::format("unit {} has no file to read", unit), at)
-                          .withNote(declared.empty() ? "no data unit is declared"
-                                                     : "declared units: " + declared)
-                          .withNote(fmt::format("declare it in the export (F mmed mesh.med D {}) or with "
-                                                "`stella run FILE.comm --unit {}=FILE`",
-                                                unit, unit)));
+      throw UserError(
+          Diagnostic::fatal("UNIT_1", fmt::format("unit {} has no file to read", unit), at)
+              .withNote(declared.empty() ? "no data unit is declared" : "declared units: " + declared)
+              .withNote(fmt::format("declare it in the export (F mmed mesh.med D {}) or with "
+                                    "`stella run FILE.comm --unit {}=FILE`",
+                                    unit, unit)));
     }
   }
   opened_.push_back(unit);
@@ -96,7 +100,9 @@ void Session::report(const Diagnostic& d) {
   message_ << framed(d);
 }
 
-void Session::recordTest(bool ok) { ++(ok ? counts_.testsOk : counts_.testsNook); }
+void Session::recordTest(bool ok) {
+  ++(ok ? counts_.testsOk : counts_.testsNook);
+}
 
 void Session::noteFailure(FailureKind kind) {
   if (counts_.failure == FailureKind::None && kind != FailureKind::None) {
@@ -134,7 +140,8 @@ Value Session::callCommand(const std::string& command, const CallArguments& args
   std::clock_t cpuStart = std::clock();
   if (options_.executeOperators) {
     const std::string resultName = call.reused ? call.reused->name : target;
-    OperatorCall opCall{*this, command, call.keywords, resultName, call.resultType, call.reused, args.callLocation};
+    OperatorCall opCall{*this,           command,     call.keywords,    resultName,
+                        call.resultType, call.reused, args.callLocation};
     try {
       result = op(opCall);
     } catch (const UserError&) {
@@ -166,8 +173,8 @@ Value Session::callCommand(const std::string& command, const CallArguments& args
     concepts_[made->name] = made;
   }
   timings_.push_back({command, location, wall});
-  message_ << fmt::format("  # End of command #{:04d}   cpu: {:.2f} s   elapsed: {:.2f} s\n", commandCount_, cpu,
-                          wall)
+  message_ << fmt::format("  # End of command #{:04d}   cpu: {:.2f} s   elapsed: {:.2f} s\n", commandCount_,
+                          cpu, wall)
            << std::flush;
   return result;
 }
@@ -175,8 +182,8 @@ Value Session::callCommand(const std::string& command, const CallArguments& args
 Value Session::conceptAttribute(const std::shared_ptr<Concept>& object, const std::string& name,
                                 const SourceLocation& at) {
   throw UserError(Diagnostic::fatal("CONCEPT_1",
-                                    "the concept " + object->name + " (" + object->type + ") has no attribute '" +
-                                        name + "'",
+                                    "the concept " + object->name + " (" + object->type +
+                                        ") has no attribute '" + name + "'",
                                     at)
                       .withNote("concept methods such as EXTR_TABLE are not implemented yet"));
 }

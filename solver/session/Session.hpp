@@ -21,8 +21,8 @@ namespace stella {
 class Catalog;
 
 struct SessionOptions {
-  bool executeOperators = true;  // false for `stella check`: validate only
-  bool referenceOnly = false;    // --reference-only: VALE_CALC lines are information
+  bool executeOperators = true; // false for `stella check`: validate only
+  bool referenceOnly = false;   // --reference-only: VALE_CALC lines are information
   std::filesystem::path workDirectory = ".";
 };
 
@@ -71,7 +71,8 @@ public:
   const std::vector<CommandTiming>& timings() const { return timings_; }
 
   // CommandHandler
-  Value callCommand(const std::string& command, const CallArguments& args, const std::string& target) override;
+  Value callCommand(const std::string& command, const CallArguments& args,
+                    const std::string& target) override;
   Value conceptAttribute(const std::shared_ptr<Concept>& object, const std::string& name,
                          const SourceLocation& at) override;
   bool finished() const override { return finished_; }

@@ -9,7 +9,7 @@
 namespace stella::cli {
 
 struct RunArguments {
-  std::string target; // .export or .comm
+  std::string target;             // .export or .comm
   std::vector<std::string> units; // "20=mesh.med"
   std::string workDirectory;
   std::string outputDirectory;

@@ -60,8 +60,8 @@ int run(const RunArguments& args) {
         int unit = 0;
         std::string path;
         if (!parseUnit(u, unit, path)) {
-          std::cerr << "stella: --unit expects UNIT=PATH with a unit from 1 to 99 other than 6 and 15, got '" << u
-                    << "'\n       example: --unit 20=mesh.med\n";
+          std::cerr << "stella: --unit expects UNIT=PATH with a unit from 1 to 99 other than 6 and 15, got '"
+                    << u << "'\n       example: --unit 20=mesh.med\n";
           return exitUsage;
         }
         units[unit] = path;

@@ -77,7 +77,9 @@ int main(int argc, char** argv) {
   std::string convertIn;
   std::string convertOut;
   auto* convert = app.add_subcommand("convert", "Convert a mesh between formats (.msh, .mail, .med)");
-  convert->add_option("input", convertIn, "the mesh to read (.msh, .mail, .med)")->required()->check(CLI::ExistingFile);
+  convert->add_option("input", convertIn, "the mesh to read (.msh, .mail, .med)")
+      ->required()
+      ->check(CLI::ExistingFile);
   convert->add_option("output", convertOut, "the mesh to write (.med, .mail, .msh)")->required();
 
   try {

@@ -25,7 +25,8 @@ TEST(JobDiagnostic, Words) {
   EXPECT_STREQ(diagnosticWord(diagnose(counts(1, 0, 2), true)), "<A>_ALARM");
   EXPECT_STREQ(diagnosticWord(diagnose(counts(1, 1, 0, FailureKind::Syntax), true)), "<F>_SYNTAX_ERROR");
   EXPECT_STREQ(diagnosticWord(diagnose(counts(1, 0, 0, FailureKind::Error), true)), "<F>_ERROR");
-  EXPECT_STREQ(diagnosticWord(diagnose(counts(1, 0, 0, FailureKind::NoConvergence), true)), "<S>_NO_CONVERGENCE");
+  EXPECT_STREQ(diagnosticWord(diagnose(counts(1, 0, 0, FailureKind::NoConvergence), true)),
+               "<S>_NO_CONVERGENCE");
   EXPECT_STREQ(diagnosticWord(diagnose(counts(1, 0, 0, FailureKind::Abort), true)), "<F>_ABNORMAL_ABORT");
 }
 

@@ -24,8 +24,9 @@ TEST(TestReport, RelativeReferenceWithinTolerance) {
   TestOutcome out = runValueTest(t, false);
   EXPECT_EQ(out.ok, 2);
   EXPECT_EQ(out.nook, 0);
-  EXPECT_NE(out.text.find(" OK  NON_REGRESSION   DEPL             -25.0            -25.000000000012 4.8E-11%"),
-            std::string::npos)
+  EXPECT_NE(
+      out.text.find(" OK  NON_REGRESSION   DEPL             -25.0            -25.000000000012 4.8E-11%"),
+      std::string::npos)
       << out.text;
   EXPECT_NE(out.text.find("0.1%"), std::string::npos) << out.text;
   EXPECT_NE(out.text.find("0.0001%"), std::string::npos) << out.text;
