@@ -1,0 +1,383 @@
+// Reading DEFI_CONTACT's keyword tree into a ContactDefinition, and the definition-time checks
+// against the mesh (groups, shared nodes, disjoint slave surfaces, outward normals).
+
+#include "solver/contact/ContactDefinition.hpp"
+
+#include "catalog/KeywordTree.hpp"
+#include "solver/mesh/MeshGeometry.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <unordered_map>
+
+namespace stella::contact {
+
+namespace {
+
+VectorChoice vectorChoice(const std::string& s) {
+  if (s == "FIXE") {
+    return VectorChoice::Fixed;
+  }
+  return s == "VECT_Y" ? VectorChoice::VectY : VectorChoice::Auto;
+}
+
+std::array<double, 3> vector3(const KeywordTree& kw, const std::string& name) {
+  std::array<double, 3> v{0, 0, 0};
+  if (kw.has(name)) {
+    const auto r = kw.reals(name);
+    for (std::size_t i = 0; i < std::min<std::size_t>(3, r.size()); ++i) {
+      v[i] = r[i];
+    }
+  }
+  return v;
+}
+
+ContactAlgorithm algorithmFromName(const std::string& s) {
+  if (s == "GCP") {
+    return ContactAlgorithm::Gcp;
+  }
+  if (s == "PENALISATION") {
+    return ContactAlgorithm::Penalty;
+  }
+  if (s == "STANDARD") {
+    return ContactAlgorithm::Standard;
+  }
+  if (s == "LAC") {
+    return ContactAlgorithm::Lac;
+  }
+  return ContactAlgorithm::Constraint;
+}
+
+ContactZone readZone(const KeywordTree& z, Formulation formulation, bool friction) {
+  ContactZone zone;
+  zone.location = z.location();
+  zone.masterGroup = z.textOr("GROUP_MA_MAIT", "");
+  zone.slaveGroup = z.textOr("GROUP_MA_ESCL", "");
+  const std::string pairing = z.textOr("APPARIEMENT", "MAIT_ESCL");
+  zone.pairing = pairing == "NODAL"    ? Pairing::Nodal
+                 : pairing == "MORTAR" ? Pairing::Mortar
+                                       : Pairing::MasterSlave;
+  const std::string normal = z.textOr("NORMALE", "MAIT");
+  zone.normal = normal == "ESCL"        ? NormalChoice::Slave
+                : normal == "MAIT_ESCL" ? NormalChoice::MasterSlave
+                                        : NormalChoice::Master;
+  zone.masterVector = vectorChoice(z.textOr("VECT_MAIT", "AUTO"));
+  zone.masterVectorValue =
+      zone.masterVector == VectorChoice::Fixed ? vector3(z, "MAIT_FIXE") : vector3(z, "MAIT_VECT_Y");
+  zone.slaveVector = vectorChoice(z.textOr("VECT_ESCL", "AUTO"));
+  zone.slaveVectorValue =
+      zone.slaveVector == VectorChoice::Fixed ? vector3(z, "ESCL_FIXE") : vector3(z, "ESCL_VECT_Y");
+  zone.projection =
+      z.textOr("TYPE_PROJECTION", "ORTHOGONALE") == "FIXE" ? Projection::Fixed : Projection::Orthogonal;
+  zone.projectionDirection = vector3(z, "DIRE_APPA");
+  zone.pairingDistance = z.realOr("DIST_APPA", -1.0);
+  zone.extensionTolerance = z.realOr("TOLE_PROJ_EXT", 0.5);
+  if (z.has("SANS_GROUP_NO")) {
+    zone.excludedNodeGroups = z.texts("SANS_GROUP_NO");
+  }
+  if (z.has("SANS_GROUP_MA")) {
+    zone.excludedCellGroups = z.texts("SANS_GROUP_MA");
+  }
+  zone.resolve = z.textOr("RESOLUTION", "OUI") == "OUI";
+  zone.interpolationTolerance = z.realOr("TOLE_INTERP", 0.0);
+  const std::string defaultAlgorithm = formulation == Formulation::Continue ? "STANDARD" : "CONTRAINTE";
+  zone.algorithm = algorithmFromName(z.textOr("ALGO_CONT", defaultAlgorithm));
+  if (formulation == Formulation::Continue && zone.algorithm == ContactAlgorithm::Penalty) {
+    zone.algorithm = ContactAlgorithm::ContinuePenalty;
+  }
+  zone.slide = z.textOr("GLISSIERE", "NON") == "OUI";
+  zone.gapAlarm = z.realOr("ALARME_JEU", 0.0);
+  zone.normalPenalty = z.realOr("E_N", 0.0);
+  zone.friction = friction;
+  zone.coulomb = z.realOr("COULOMB", 0.0);
+  zone.tangentPenalty = z.realOr("E_T", 0.0);
+  zone.frictionMatrixCoefficient = z.realOr("COEF_MATR_FROT", 0.0);
+  return zone;
+}
+
+ContactSettings readSettings(const KeywordTree& kw) {
+  ContactSettings s;
+  const std::string formulation = kw.textOr("FORMULATION", "DISCRETE");
+  s.formulation = formulation == "CONTINUE"       ? Formulation::Continue
+                  : formulation == "LIAISON_UNIL" ? Formulation::LiaisonUnil
+                                                  : Formulation::Discrete;
+  s.friction = kw.textOr("FROTTEMENT", "SANS") == "COULOMB";
+  s.stopInterpenetration = kw.textOr("STOP_INTERP", "NON") == "OUI";
+  s.smoothing = kw.textOr("LISSAGE", "NON") == "OUI";
+  s.checkNormals = kw.textOr("VERI_NORM", "OUI") == "OUI";
+  const std::string reac = kw.textOr("REAC_GEOM", "AUTOMATIQUE");
+  s.geometricUpdate = reac == "SANS"       ? GeometricUpdate::None
+                      : reac == "CONTROLE" ? GeometricUpdate::Controlled
+                                           : GeometricUpdate::Automatic;
+  s.maxGeometricIterations = static_cast<int>(kw.integerOr("ITER_GEOM_MAXI", 10));
+  s.geometricResidual = kw.realOr("RESI_GEOM", 0.01);
+  s.geometricIterations = static_cast<int>(kw.integerOr("NB_ITER_GEOM", 2));
+  s.contactIterationFactor = static_cast<int>(kw.integerOr("ITER_CONT_MULT", 4));
+  s.stopIfSingular = kw.textOr("STOP_SINGULIER", "OUI") == "OUI";
+  s.rightHandSidesPerSolve = static_cast<int>(kw.integerOr("NB_RESOL", 10));
+  if (kw.has("RESI_ABSO")) {
+    s.gcpTolerance = kw.real("RESI_ABSO");
+  }
+  s.gcpMaxIterations = static_cast<int>(kw.integerOr("ITER_GCP_MAXI", 0));
+  s.lineSearch = kw.textOr("RECH_LINEAIRE", "ADMISSIBLE") == "NON_ADMISSIBLE" ? LineSearch::NonAdmissible
+                                                                              : LineSearch::Admissible;
+  s.dirichletPreconditioner = kw.textOr("PRE_COND", "SANS") == "DIRICHLET";
+  s.preconditionerResidual = kw.realOr("COEF_RESI", -1.0);
+  s.preconditionerMaxIterations = static_cast<int>(kw.integerOr("ITER_PRE_MAXI", 0));
+  s.continueGeometryAlgorithm = kw.textOr("ALGO_RESO_GEOM", "POINT_FIXE");
+  return s;
+}
+
+std::string groupList(const Mesh& mesh) {
+  std::vector<std::string> names;
+  for (const auto& [name, cells] : mesh.cellGroups()) {
+    names.push_back(name);
+  }
+  return names.empty() ? std::string("(none)") : fmt::format("{}", fmt::join(names, ", "));
+}
+
+const std::vector<CellId>& cellGroupOrThrow(const Mesh& mesh, const std::string& group,
+                                            const std::string& keyword, const SourceLocation& at) {
+  const auto* cells = mesh.cellGroup(group);
+  if (cells == nullptr) {
+    throw UserError(
+        Diagnostic::fatal("CONTACT_1", fmt::format("{}: the mesh has no cell group '{}'", keyword, group), at)
+            .withNote(fmt::format("its cell groups are: {}", groupList(mesh))));
+  }
+  return *cells;
+}
+
+std::string nodeNames(const Mesh& mesh, const std::vector<NodeId>& nodes) {
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < nodes.size() && i < 20; ++i) {
+    names.push_back(mesh.nodeName(nodes[i]));
+  }
+  std::string s = fmt::format("{}", fmt::join(names, ", "));
+  if (nodes.size() > 20) {
+    s += fmt::format(" ... ({} nodes)", nodes.size());
+  }
+  return s;
+}
+
+std::vector<NodeId> intersection(const std::vector<NodeId>& a, const std::vector<NodeId>& b) {
+  std::vector<NodeId> out;
+  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
+  return out;
+}
+
+void checkCellDimensions(const Mesh& mesh, const std::vector<CellId>& cells, const std::string& group,
+                         const SourceLocation& at) {
+  const int wanted = mesh.dimension() - 1;
+  for (CellId c : cells) {
+    const auto t = mesh.cellType(c);
+    const bool ok = wanted == 1 ? (t == CellType::SEG2 || t == CellType::SEG3)
+                                : (t == CellType::TRIA3 || t == CellType::TRIA6 || t == CellType::QUAD4 ||
+                                   t == CellType::QUAD8 || t == CellType::QUAD9);
+    if (!ok) {
+      throw UserError(
+          Diagnostic::fatal(
+              "CONTACT_4",
+              fmt::format("contact group '{}' holds cell {} of type {}, not a contact cell of a {}D mesh",
+                          group, mesh.cellName(c), info(t).name, mesh.dimension()),
+              at)
+              .withNote(wanted == 1
+                            ? "a 2D or axisymmetric contact surface is made of SEG2 or SEG3 edges"
+                            : "a 3D contact surface is made of TRIA3, TRIA6, QUAD4, QUAD8 or QUAD9 faces"));
+    }
+  }
+}
+
+// Volume cells (of dimension mesh dimension) touching each vertex of the given cells.
+std::unordered_map<NodeId, std::vector<CellId>> volumeCellsOfNodes(const Mesh& mesh,
+                                                                   const std::vector<CellId>& cells) {
+  std::unordered_map<NodeId, std::vector<CellId>> map;
+  for (CellId c : cells) {
+    for (NodeId n : mesh.cellNodes(c)) {
+      map.emplace(n, std::vector<CellId>{});
+    }
+  }
+  for (CellId v = 0; v < mesh.cellCount(); ++v) {
+    if (info(mesh.cellType(v)).dimension != mesh.dimension()) {
+      continue;
+    }
+    for (NodeId n : mesh.cellNodes(v)) {
+      auto it = map.find(n);
+      if (it != map.end()) {
+        it->second.push_back(v);
+      }
+    }
+  }
+  return map;
+}
+
+// A volume cell holding every node of skin cell c, or -1.
+CellId boundedVolume(const Mesh& mesh, CellId c, const std::unordered_map<NodeId, std::vector<CellId>>& map) {
+  const auto nodes = mesh.cellNodes(c);
+  for (CellId v : map.at(nodes[0])) {
+    const auto vn = mesh.cellNodes(v);
+    const bool all = std::all_of(nodes.begin(), nodes.end(),
+                                 [&](NodeId n) { return std::find(vn.begin(), vn.end(), n) != vn.end(); });
+    if (all) {
+      return v;
+    }
+  }
+  return -1;
+}
+
+void checkNormals(const Mesh& mesh, const std::vector<CellId>& cells, const std::string& group,
+                  const SourceLocation& at) {
+  const auto map = volumeCellsOfNodes(mesh, cells);
+  std::vector<std::string> inward;
+  for (CellId c : cells) {
+    const CellId v = boundedVolume(mesh, c, map);
+    if (v < 0) {
+      continue; // a skin without a volume (beam-like, rigid skin): nothing to check against
+    }
+    const Point3 out = cellCentroid(mesh, c) - cellCentroid(mesh, v);
+    if (dot(out, cellNormal(mesh, c)) < 0.0) {
+      inward.push_back(mesh.cellName(c));
+    }
+  }
+  if (!inward.empty()) {
+    const std::size_t shown = std::min<std::size_t>(inward.size(), 10);
+    throw UserError(
+        Diagnostic::fatal(
+            "CONTACT_5",
+            fmt::format(
+                "the normals of contact group '{}' point into the volume they bound on {} "
+                "cell(s): {}{}",
+                group, inward.size(),
+                fmt::join(std::vector<std::string>(inward.begin(), inward.begin() + static_cast<long>(shown)),
+                          ", "),
+                inward.size() > shown ? " ..." : ""),
+            at)
+            .withNote(
+                fmt::format("orient the group outward with MODI_MAILLAGE(ORIE_PEAU=_F(GROUP_MA_PEAU='{}')) "
+                            "(ORIE_PEAU_2D / ORIE_PEAU_3D in older versions), or set VERI_NORM='NON'",
+                            group)));
+  }
+}
+
+} // namespace
+
+bool ContactDefinition::resolvesAny() const {
+  return std::any_of(zones.begin(), zones.end(), [](const ContactZone& z) { return z.resolve; });
+}
+
+std::string algorithmName(ContactAlgorithm a) {
+  switch (a) {
+  case ContactAlgorithm::Constraint:
+    return "CONTRAINTE";
+  case ContactAlgorithm::Gcp:
+    return "GCP";
+  case ContactAlgorithm::Penalty:
+  case ContactAlgorithm::ContinuePenalty:
+    return "PENALISATION";
+  case ContactAlgorithm::Standard:
+    return "STANDARD";
+  case ContactAlgorithm::Lac:
+    return "LAC";
+  }
+  return "?";
+}
+
+std::shared_ptr<ContactDefinition> readContactDefinition(const KeywordTree& keywords,
+                                                         std::shared_ptr<const Mesh> mesh) {
+  auto def = std::make_shared<ContactDefinition>();
+  def->mesh = std::move(mesh);
+  def->location = keywords.location();
+  def->settings = readSettings(keywords);
+  for (const KeywordTree& z : keywords.occurrences("ZONE")) {
+    def->zones.push_back(readZone(z, def->settings.formulation, def->settings.friction));
+  }
+  return def;
+}
+
+std::vector<NodeId> zoneSlaveNodes(const Mesh& mesh, const ContactZone& zone) {
+  const auto* cells = mesh.cellGroup(zone.slaveGroup);
+  if (cells == nullptr) {
+    return {};
+  }
+  std::vector<NodeId> nodes = mesh.nodesOfCells(*cells);
+  std::vector<NodeId> excluded;
+  for (const auto& g : zone.excludedNodeGroups) {
+    if (const auto* ns = mesh.nodeGroup(g)) {
+      excluded.insert(excluded.end(), ns->begin(), ns->end());
+    }
+  }
+  for (const auto& g : zone.excludedCellGroups) {
+    if (const auto* cs = mesh.cellGroup(g)) {
+      const auto ns = mesh.nodesOfCells(*cs);
+      excluded.insert(excluded.end(), ns.begin(), ns.end());
+    }
+  }
+  std::sort(excluded.begin(), excluded.end());
+  std::vector<NodeId> out;
+  std::set_difference(nodes.begin(), nodes.end(), excluded.begin(), excluded.end(), std::back_inserter(out));
+  return out;
+}
+
+std::vector<CellId> zoneMasterCells(const Mesh& mesh, const ContactZone& zone) {
+  const auto* cells = mesh.cellGroup(zone.masterGroup);
+  return cells == nullptr ? std::vector<CellId>{} : *cells;
+}
+
+void checkContactDefinition(const ContactDefinition& def) {
+  const Mesh& mesh = *def.mesh;
+  if (def.settings.formulation == Formulation::LiaisonUnil) {
+    return; // no surfaces
+  }
+  std::vector<std::vector<NodeId>> slaves;
+  for (const ContactZone& zone : def.zones) {
+    const auto& master = cellGroupOrThrow(mesh, zone.masterGroup, "GROUP_MA_MAIT", zone.location);
+    const auto& slave = cellGroupOrThrow(mesh, zone.slaveGroup, "GROUP_MA_ESCL", zone.location);
+    for (const auto& g : zone.excludedCellGroups) {
+      cellGroupOrThrow(mesh, g, "SANS_GROUP_MA", zone.location);
+    }
+    for (const auto& g : zone.excludedNodeGroups) {
+      if (!mesh.hasNodeGroup(g)) {
+        throw UserError(Diagnostic::fatal("CONTACT_1",
+                                          fmt::format("SANS_GROUP_NO: the mesh has no node group '{}'", g),
+                                          zone.location)
+                            .withNote("create it with DEFI_GROUP(CREA_GROUP_NO=...)"));
+      }
+    }
+    checkCellDimensions(mesh, master, zone.masterGroup, zone.location);
+    checkCellDimensions(mesh, slave, zone.slaveGroup, zone.location);
+    const auto shared = intersection(mesh.nodesOfCells(master), zoneSlaveNodes(mesh, zone));
+    if (!shared.empty()) {
+      throw UserError(
+          Diagnostic::fatal(
+              "CONTACT_2",
+              fmt::format("the master surface '{}' and the slave surface '{}' of a contact zone "
+                          "share {} node(s): {}",
+                          zone.masterGroup, zone.slaveGroup, shared.size(), nodeNames(mesh, shared)),
+              zone.location)
+              .withNote("exclude the shared nodes from the slave side with SANS_GROUP_NO (notice §2.3.4)"));
+    }
+    auto slaveNodes = zoneSlaveNodes(mesh, zone);
+    for (std::size_t k = 0; k < slaves.size(); ++k) {
+      const auto common = intersection(slaves[k], slaveNodes);
+      if (!common.empty()) {
+        throw UserError(
+            Diagnostic::fatal(
+                "CONTACT_3",
+                fmt::format("the slave surfaces of zones {} ('{}') and {} ('{}') share {} node(s): {}", k + 1,
+                            def.zones[k].slaveGroup, slaves.size() + 1, zone.slaveGroup, common.size(),
+                            nodeNames(mesh, common)),
+                zone.location)
+                .withNote("slave surfaces of distinct zones must be disjoint: merge the zones or exclude the "
+                          "nodes with SANS_GROUP_NO"));
+      }
+    }
+    slaves.push_back(std::move(slaveNodes));
+    if (def.settings.checkNormals) {
+      checkNormals(mesh, master, zone.masterGroup, zone.location);
+      checkNormals(mesh, slave, zone.slaveGroup, zone.location);
+    }
+  }
+}
+
+} // namespace stella::contact

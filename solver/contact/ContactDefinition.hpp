@@ -1,0 +1,120 @@
+#pragma once
+// The data of a `char_contact` concept (DEFI_CONTACT): the formulation, the global settings of
+// the geometric loop and of the discrete algorithms, and the contact zones with their pairing
+// and resolution settings, as read from the validated keyword tree. The definition keeps every
+// formulation the catalogue accepts (DISCRETE, CONTINUE, LAC); STAT_NON_LINE refuses the ones not
+// implemented yet. Checks against the mesh (groups, shared nodes, disjoint slave surfaces,
+// outward normals) run when the definition is built (checkContactDefinition).
+
+#include "interpreter/Diagnostics.hpp"
+#include "interpreter/Value.hpp"
+#include "solver/mesh/Mesh.hpp"
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace stella {
+
+class KeywordTree;
+class Model;
+
+namespace contact {
+
+enum class Formulation { Discrete, Continue, LiaisonUnil };
+enum class Pairing { MasterSlave, Nodal, Mortar };      // APPARIEMENT
+enum class NormalChoice { Master, MasterSlave, Slave }; // NORMALE
+enum class VectorChoice { Auto, Fixed, VectY };         // VECT_MAIT / VECT_ESCL
+enum class Projection { Orthogonal, Fixed };            // TYPE_PROJECTION
+enum class ContactAlgorithm { Constraint, Gcp, Penalty, Standard, ContinuePenalty, Lac }; // ALGO_CONT
+enum class GeometricUpdate { Automatic, Controlled, None };                               // REAC_GEOM
+enum class LineSearch { Admissible, NonAdmissible };                                      // RECH_LINEAIRE
+
+// One ZONE occurrence.
+struct ContactZone {
+  std::string masterGroup; // GROUP_MA_MAIT
+  std::string slaveGroup;  // GROUP_MA_ESCL
+  Pairing pairing = Pairing::MasterSlave;
+  NormalChoice normal = NormalChoice::Master;
+  VectorChoice masterVector = VectorChoice::Auto;
+  std::array<double, 3> masterVectorValue{0, 0, 0}; // MAIT_FIXE or MAIT_VECT_Y
+  VectorChoice slaveVector = VectorChoice::Auto;
+  std::array<double, 3> slaveVectorValue{0, 0, 0}; // ESCL_FIXE or ESCL_VECT_Y
+  Projection projection = Projection::Orthogonal;
+  std::array<double, 3> projectionDirection{0, 0, 0}; // DIRE_APPA
+  double pairingDistance = -1.0;                      // DIST_APPA (< 0: no limit)
+  double extensionTolerance = 0.5;                    // TOLE_PROJ_EXT
+  std::vector<std::string> excludedNodeGroups;        // SANS_GROUP_NO
+  std::vector<std::string> excludedCellGroups;        // SANS_GROUP_MA
+  bool resolve = true;                                // RESOLUTION
+  double interpolationTolerance = 0.0;                // TOLE_INTERP
+  ContactAlgorithm algorithm = ContactAlgorithm::Constraint;
+  bool slide = false;                     // GLISSIERE (permanent bilateral contact)
+  double gapAlarm = 0.0;                  // ALARME_JEU
+  double normalPenalty = 0.0;             // E_N
+  bool friction = false;                  // FROTTEMENT='COULOMB'
+  double coulomb = 0.0;                   // COULOMB
+  double tangentPenalty = 0.0;            // E_T
+  double frictionMatrixCoefficient = 0.0; // COEF_MATR_FROT
+  SourceLocation location;
+};
+
+// Global keywords.
+struct ContactSettings {
+  Formulation formulation = Formulation::Discrete;
+  bool friction = false;                                        // FROTTEMENT
+  bool stopInterpenetration = false;                            // STOP_INTERP
+  bool smoothing = false;                                       // LISSAGE
+  bool checkNormals = true;                                     // VERI_NORM
+  GeometricUpdate geometricUpdate = GeometricUpdate::Automatic; // REAC_GEOM
+  int maxGeometricIterations = 10;                              // ITER_GEOM_MAXI
+  double geometricResidual = 0.01;                              // RESI_GEOM
+  int geometricIterations = 2;                                  // NB_ITER_GEOM (CONTROLE)
+  int contactIterationFactor = 4;                               // ITER_CONT_MULT
+  bool stopIfSingular = true;                                   // STOP_SINGULIER
+  int rightHandSidesPerSolve = 10;                              // NB_RESOL
+  std::optional<double> gcpTolerance;                           // RESI_ABSO
+  int gcpMaxIterations = 0;                                     // ITER_GCP_MAXI (0: automatic)
+  LineSearch lineSearch = LineSearch::Admissible;               // RECH_LINEAIRE
+  bool dirichletPreconditioner = false;                         // PRE_COND='DIRICHLET'
+  double preconditionerResidual = -1.0;                         // COEF_RESI
+  int preconditionerMaxIterations = 0;                          // ITER_PRE_MAXI
+  std::string continueGeometryAlgorithm = "POINT_FIXE";         // ALGO_RESO_GEOM (kept for CONTINUE)
+};
+
+class ContactDefinition : public ConceptData {
+public:
+  std::shared_ptr<const Mesh> mesh;
+  std::shared_ptr<const Model> model; // may be null in unit tests
+  ContactSettings settings;
+  std::vector<ContactZone> zones;
+  SourceLocation location;
+
+  bool hasFriction() const { return settings.friction; }
+  // Whether any zone resolves contact (RESOLUTION='OUI').
+  bool resolvesAny() const;
+};
+
+// Reads the keyword tree of DEFI_CONTACT (validated by the catalogue). `mesh` is the model's
+// mesh. Throws UserError for what the catalogue cannot check (groups, geometry).
+std::shared_ptr<ContactDefinition> readContactDefinition(const KeywordTree& keywords,
+                                                         std::shared_ptr<const Mesh> mesh);
+
+// The checks of DEFI_CONTACT against the mesh: every group exists (CONTACT_1), master and
+// slave surfaces of a zone share no node unless excluded (CONTACT_2), slave surfaces of
+// distinct zones are disjoint (CONTACT_3), contact cells have the right dimension (CONTACT_4),
+// and with VERI_NORM the normals of both surfaces point out of the volume cells they bound
+// (CONTACT_5). Throws UserError naming groups and nodes.
+void checkContactDefinition(const ContactDefinition& definition);
+
+// Slave nodes of a zone (nodes of GROUP_MA_ESCL minus SANS_GROUP_NO and nodes of SANS_GROUP_MA),
+// sorted; master cells of a zone.
+std::vector<NodeId> zoneSlaveNodes(const Mesh& mesh, const ContactZone& zone);
+std::vector<CellId> zoneMasterCells(const Mesh& mesh, const ContactZone& zone);
+
+std::string algorithmName(ContactAlgorithm a);
+
+} // namespace contact
+} // namespace stella

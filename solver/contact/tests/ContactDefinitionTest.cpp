@@ -1,0 +1,142 @@
+// DEFI_CONTACT's definition: keywords read into the ContactDefinition, and the definition-time
+// checks (unknown group, shared master/slave nodes, overlapping slave surfaces, inward normals).
+
+#include "solver/contact/ContactDefinition.hpp"
+#include "solver/contact/tests/ContactTestMeshes.hpp"
+
+#include <gtest/gtest.h>
+
+namespace stella::contact {
+namespace {
+
+using testing::simple;
+
+KeywordTree zoneTree(const std::string& master, const std::string& slave,
+                     std::vector<SimpleKeyword> extra = {}) {
+  KeywordTree z;
+  z.addSimple(simple("GROUP_MA_MAIT", {Value(master)}));
+  z.addSimple(simple("GROUP_MA_ESCL", {Value(slave)}));
+  for (auto& k : extra) {
+    z.addSimple(std::move(k));
+  }
+  return z;
+}
+
+KeywordTree definitionTree(std::vector<KeywordTree> zones, std::vector<SimpleKeyword> global = {}) {
+  KeywordTree kw;
+  for (auto& k : global) {
+    kw.addSimple(std::move(k));
+  }
+  FactorKeyword f;
+  f.name = "ZONE";
+  f.occurrences = std::move(zones);
+  kw.addFactor(std::move(f));
+  return kw;
+}
+
+std::shared_ptr<const Mesh> blocks(double gap) {
+  return std::make_shared<const Mesh>(testing::twoBlocks(CellType::QUAD4, 2, 3, gap));
+}
+
+std::string errorId(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const UserError& e) {
+    return e.first().id + ": " + e.first().message;
+  }
+  return "";
+}
+
+TEST(ContactDefinition, ReadsZonesAndGlobalSettings) {
+  auto kw = definitionTree(
+      {zoneTree("A_YMAX", "B_YMIN",
+                {simple("ALGO_CONT", {Value("PENALISATION")}), simple("E_N", {Value(1.0e6)}),
+                 simple("APPARIEMENT", {Value("NODAL")}), simple("DIST_APPA", {Value(0.2)}),
+                 simple("TOLE_PROJ_EXT", {Value(0.1)}), simple("COULOMB", {Value(0.3)}),
+                 simple("E_T", {Value(1.0e5)}), simple("COEF_MATR_FROT", {Value(0.5)})})},
+      {simple("FORMULATION", {Value("DISCRETE")}), simple("FROTTEMENT", {Value("COULOMB")}),
+       simple("REAC_GEOM", {Value("CONTROLE")}), simple("NB_ITER_GEOM", {Value(std::int64_t{3})}),
+       simple("RESI_ABSO", {Value(1e-5)}), simple("LISSAGE", {Value("OUI")})});
+  auto def = readContactDefinition(kw, blocks(0.0));
+  ASSERT_EQ(def->zones.size(), 1u);
+  const auto& z = def->zones[0];
+  EXPECT_EQ(z.algorithm, ContactAlgorithm::Penalty);
+  EXPECT_EQ(z.normalPenalty, 1.0e6);
+  EXPECT_EQ(z.pairing, Pairing::Nodal);
+  EXPECT_EQ(z.pairingDistance, 0.2);
+  EXPECT_EQ(z.extensionTolerance, 0.1);
+  EXPECT_TRUE(z.friction);
+  EXPECT_EQ(z.coulomb, 0.3);
+  EXPECT_EQ(z.tangentPenalty, 1.0e5);
+  EXPECT_EQ(z.frictionMatrixCoefficient, 0.5);
+  EXPECT_EQ(def->settings.geometricUpdate, GeometricUpdate::Controlled);
+  EXPECT_EQ(def->settings.geometricIterations, 3);
+  ASSERT_TRUE(def->settings.gcpTolerance.has_value());
+  EXPECT_EQ(*def->settings.gcpTolerance, 1e-5);
+  EXPECT_TRUE(def->settings.smoothing);
+  EXPECT_NO_THROW(checkContactDefinition(*def));
+}
+
+TEST(ContactDefinition, KeepsContinueFormulation) {
+  auto kw = definitionTree({zoneTree("A_YMAX", "B_YMIN", {simple("ALGO_CONT", {Value("LAC")})})},
+                           {simple("FORMULATION", {Value("CONTINUE")})});
+  auto def = readContactDefinition(kw, blocks(0.1));
+  EXPECT_EQ(def->settings.formulation, Formulation::Continue);
+  EXPECT_EQ(def->zones[0].algorithm, ContactAlgorithm::Lac);
+}
+
+TEST(ContactDefinition, UnknownGroupIsNamed) {
+  auto def = readContactDefinition(definitionTree({zoneTree("A_YMAX", "B_BOTTOM")}), blocks(0.1));
+  const auto e = errorId([&] { checkContactDefinition(*def); });
+  EXPECT_EQ(e.substr(0, 9), "CONTACT_1");
+  EXPECT_NE(e.find("B_BOTTOM"), std::string::npos) << e;
+}
+
+TEST(ContactDefinition, SharedNodesAreFatalUnlessExcluded) {
+  // Master and slave on the same block: A_YMAX and A_XMAX share the corner node (1, 1).
+  auto def = readContactDefinition(definitionTree({zoneTree("A_YMAX", "A_XMAX")}), blocks(0.1));
+  const auto e = errorId([&] { checkContactDefinition(*def); });
+  EXPECT_EQ(e.substr(0, 9), "CONTACT_2") << e;
+  EXPECT_NE(e.find("share 1 node"), std::string::npos) << e;
+  // Excluding A_XMAX's nodes on A_YMAX (group of the shared corner) lifts the error.
+  auto mesh = std::make_shared<Mesh>(testing::twoBlocks(CellType::QUAD4, 2, 3, 0.1));
+  mesh->setNodeGroup("CORNER", {*mesh->findNode(mesh->nodeName(2 * 3 + 2))}); // (1,1) of a 2x2 block
+  auto def2 = readContactDefinition(definitionTree({zoneTree("A_YMAX", "A_XMAX",
+                                                             {simple("SANS_GROUP_NO", {Value("CORNER")}),
+                                                              simple("VERI_NORM", {Value("NON")})})}),
+                                    mesh);
+  def2->settings.checkNormals = false;
+  EXPECT_NO_THROW(checkContactDefinition(*def2));
+}
+
+TEST(ContactDefinition, SlaveSurfacesOfZonesMustBeDisjoint) {
+  auto def = readContactDefinition(
+      definitionTree({zoneTree("A_YMAX", "B_YMIN"), zoneTree("A_XMAX", "B_YMIN")}), blocks(0.1));
+  const auto e = errorId([&] { checkContactDefinition(*def); });
+  EXPECT_EQ(e.substr(0, 9), "CONTACT_3") << e;
+  EXPECT_NE(e.find("B_YMIN"), std::string::npos) << e;
+}
+
+TEST(ContactDefinition, InwardNormalsPointToOrientation) {
+  auto mesh = std::make_shared<Mesh>(testing::twoBlocks(CellType::QUAD4, 2, 3, 0.1));
+  // Reverse the first edge of B_YMIN.
+  const CellId c = mesh->cellGroup("B_YMIN")->front();
+  auto nodes = mesh->mutableCellNodes(c);
+  std::swap(nodes[0], nodes[1]);
+  auto def = readContactDefinition(definitionTree({zoneTree("A_YMAX", "B_YMIN")}), mesh);
+  const auto e = errorId([&] { checkContactDefinition(*def); });
+  EXPECT_EQ(e.substr(0, 9), "CONTACT_5") << e;
+  EXPECT_NE(e.find("B_YMIN"), std::string::npos) << e;
+  def->settings.checkNormals = false;
+  EXPECT_NO_THROW(checkContactDefinition(*def));
+}
+
+TEST(ContactDefinition, ThreeDimensionalFacesAccepted) {
+  auto mesh = std::make_shared<const Mesh>(testing::twoBlocks(CellType::HEXA8, 2, 2, 0.0));
+  auto def = readContactDefinition(definitionTree({zoneTree("A_ZMAX", "B_ZMIN")}), mesh);
+  EXPECT_NO_THROW(checkContactDefinition(*def));
+  EXPECT_EQ(zoneSlaveNodes(*mesh, def->zones[0]).size(), 9u);
+}
+
+} // namespace
+} // namespace stella::contact
