@@ -173,6 +173,9 @@ JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
     for (const auto& [unit, path] : unitPaths) {
       session->declareUnit(unit, path);
     }
+    for (const auto& d : spec.data) {
+      session->declareUnitOrigin(d.unit, d.source);
+    }
     Interpreter interpreter(*session, *session);
     for (const auto& name : catalog.commandNames()) {
       interpreter.defineCommand(name);

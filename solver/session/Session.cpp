@@ -65,6 +65,35 @@ void Session::declareUnit(int unit, std::filesystem::path path) {
   units_[unit] = std::move(path);
 }
 
+void Session::declareUnitOrigin(int unit, std::filesystem::path userFile) {
+  unitOrigins_[unit] = std::move(userFile);
+}
+
+UserError Session::withUserPaths(const UserError& e) const {
+  std::vector<Diagnostic> ds = e.diagnostics();
+  auto rewrite = [&](std::string& text) {
+    for (const auto& [unit, origin] : unitOrigins_) {
+      auto it = units_.find(unit);
+      if (it == units_.end()) {
+        continue;
+      }
+      const std::string copy = it->second.string();
+      const std::string shown = origin.string() + " (unit " + std::to_string(unit) + ")";
+      for (std::size_t at = text.find(copy); at != std::string::npos;
+           at = text.find(copy, at + shown.size())) {
+        text.replace(at, copy.size(), shown);
+      }
+    }
+  };
+  for (auto& d : ds) {
+    rewrite(d.message);
+    for (auto& note : d.notes) {
+      rewrite(note);
+    }
+  }
+  return UserError(std::move(ds));
+}
+
 std::filesystem::path Session::unitPath(int unit, const SourceLocation& at, bool forReading) const {
   auto it = units_.find(unit);
   std::filesystem::path path =
@@ -144,8 +173,8 @@ Value Session::callCommand(const std::string& command, const CallArguments& args
                         call.resultType, call.reused, args.callLocation};
     try {
       result = op(opCall);
-    } catch (const UserError&) {
-      throw;
+    } catch (const UserError& e) {
+      throw withUserPaths(e);
     } catch (const InternalError& e) {
       throw UserError(Diagnostic::fatal("INTERNAL_1", "internal error in stella while running " + command,
                                         args.callLocation)

@@ -48,6 +48,9 @@ public:
   // Declared units: unit number -> path of the file (in the work directory). Unit 6 is the
   // message file, unit 8 the result file, unit 80 the MED result by convention.
   void declareUnit(int unit, std::filesystem::path path);
+  // The user's own file behind a unit (e.g. mesh.med for fort.20): messages name it rather
+  // than the copy in the work directory.
+  void declareUnitOrigin(int unit, std::filesystem::path userFile);
   // The path for a unit; throws UserError (UNIT_1) naming the unit and the declared ones when
   // the unit is unknown and `mustExist`.
   std::filesystem::path unitPath(int unit, const SourceLocation& at, bool forReading) const;
@@ -92,6 +95,8 @@ private:
   std::ostream& result_;
   SessionOptions options_;
   std::map<int, std::filesystem::path> units_;
+  std::map<int, std::filesystem::path> unitOrigins_;
+  UserError withUserPaths(const UserError& e) const;
   mutable std::vector<int> opened_;
   SessionCounts counts_;
   std::vector<CommandTiming> timings_;
