@@ -15,22 +15,6 @@ namespace stella {
 
 namespace {
 
-double reduce(const std::string& type, const std::vector<double>& values) {
-  double r = type == "MIN" ? values.front() : (type == "MAX" ? values.front() : 0.0);
-  for (double v : values) {
-    if (type == "MIN") {
-      r = std::min(r, v);
-    } else if (type == "MAX") {
-      r = std::max(r, v);
-    } else if (type == "SOMM") {
-      r += v;
-    } else {
-      r += std::fabs(v);
-    }
-  }
-  return r;
-}
-
 Value runTestTable(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
   auto tableConcept = kw.conceptValue("TABLE");
@@ -63,7 +47,7 @@ Value runTestTable(OperatorCall& call) {
             .withNote(values.empty() ? "check the FILTRE values against the table (IMPR_TABLE prints it)"
                                      : "add a FILTRE, or TYPE_TEST='MIN', 'MAX', 'SOMM' or 'SOMM_ABS'"));
   }
-  double computed = type.empty() ? values.front() : reduce(type, values);
+  double computed = type.empty() ? values.front() : reduceByTestType(type, values);
   if (kw.textOr("VALE_ABS", "NON") == "OUI") {
     computed = std::fabs(computed);
   }

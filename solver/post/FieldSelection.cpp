@@ -1,6 +1,7 @@
 // FieldSelection: steps, fields, components and entities of results for TEST_RESU and tables.
 
 #include "solver/post/FieldSelection.hpp"
+#include "solver/post/TestReport.hpp"
 
 #include "interpreter/Diagnostics.hpp"
 
@@ -212,33 +213,17 @@ EntitySelection selectEntities(const Mesh& mesh, const Field& field, const Keywo
 
 double reduceValues(const Field& field, std::size_t component, const std::vector<std::size_t>& entities,
                     const std::string& type, const KeywordTree& occ) {
-  bool any = false;
-  double r = 0.0;
+  std::vector<double> values;
   for (std::size_t e : entities) {
-    if (!field.defined(e, component)) {
-      continue;
-    }
-    const double v = field.value(e, component);
-    if (!any) {
-      r = type == "SOMM_ABS" ? std::fabs(v) : v;
-      any = true;
-      continue;
-    }
-    if (type == "MIN") {
-      r = std::min(r, v);
-    } else if (type == "MAX") {
-      r = std::max(r, v);
-    } else if (type == "SOMM") {
-      r += v;
-    } else {
-      r += std::fabs(v);
+    if (field.defined(e, component)) {
+      values.push_back(field.value(e, component));
     }
   }
-  if (!any) {
+  if (values.empty()) {
     throw UserError(
         Diagnostic::fatal("RESU_6", "the selection holds no value of the component", occ.location()));
   }
-  return r;
+  return reduceByTestType(type, values);
 }
 
 } // namespace stella

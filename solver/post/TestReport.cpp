@@ -45,6 +45,23 @@ Comparison compare(double reference, double computed, double tolerance, bool abs
 
 } // namespace
 
+double reduceByTestType(const std::string& type, const std::vector<double>& values) {
+  double r = type == "SOMM_ABS" ? std::fabs(values.front()) : values.front();
+  for (std::size_t i = 1; i < values.size(); ++i) {
+    const double v = values[i];
+    if (type == "MIN") {
+      r = std::min(r, v);
+    } else if (type == "MAX") {
+      r = std::max(r, v);
+    } else if (type == "SOMM") {
+      r += v;
+    } else {
+      r += std::fabs(v);
+    }
+  }
+  return r;
+}
+
 std::string testNumber(double x) {
   std::string s = Value(x).repr();
   std::replace(s.begin(), s.end(), 'e', 'E');

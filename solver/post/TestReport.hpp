@@ -37,6 +37,9 @@ std::string testHeader(const std::vector<std::pair<std::string, std::string>>& c
 // status and not counted.
 TestOutcome runValueTest(const ValueTest& test, bool referenceOnly);
 
+// TYPE_TEST of TEST_RESU and TEST_TABLE: MIN, MAX, SOMM or SOMM_ABS of `values` (not empty).
+double reduceByTestType(const std::string& type, const std::vector<double>& values);
+
 // Python's %s of a real with 'e' printed as 'E' (how code_aster prints tested values).
 std::string testNumber(double x);
 
