@@ -201,7 +201,12 @@ Value Session::callCommand(const std::string& command, const CallArguments& args
     }
     concepts_[made->name] = made;
   }
-  timings_.push_back({command, location, wall});
+  // The summary table names the file without its folders, so its columns stay aligned.
+  const std::string shortLocation =
+      args.callLocation.file ? std::filesystem::path(args.callLocation.file->name()).filename().string() +
+                                   ":" + std::to_string(args.callLocation.line)
+                             : location;
+  timings_.push_back({command, shortLocation, wall});
   message_ << fmt::format("  # End of command #{:04d}   cpu: {:.2f} s   elapsed: {:.2f} s\n", commandCount_,
                           cpu, wall)
            << std::flush;
