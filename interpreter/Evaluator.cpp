@@ -258,7 +258,26 @@ Evaluator::Flow Evaluator::execBlock(const std::vector<StmtPtr>& body) {
   return Flow::Normal;
 }
 
+// An error raised without a location (e.g. LANG_DEPTH from printing or comparing a value nested
+// too deeply) is placed at the statement being executed.
 Evaluator::Flow Evaluator::execStatement(const Stmt& s) {
+  try {
+    return execStatementOfKind(s);
+  } catch (const UserError& err) {
+    if (err.first().location.known()) {
+      throw;
+    }
+    std::vector<Diagnostic> ds = err.diagnostics();
+    for (auto& d : ds) {
+      if (!d.location.known()) {
+        d.location = location(s.pos);
+      }
+    }
+    throw UserError(std::move(ds));
+  }
+}
+
+Evaluator::Flow Evaluator::execStatementOfKind(const Stmt& s) {
   countStep(s.pos);
   switch (s.kind) {
   case StmtKind::Expr:

@@ -75,6 +75,7 @@ private:
 
   Flow execBlock(const std::vector<StmtPtr>& body);
   Flow execStatement(const Stmt& s);
+  Flow execStatementOfKind(const Stmt& s);
   void execAssign(const Stmt& s);
   void execAugAssign(const Stmt& s);
   Flow execFor(const Stmt& s);

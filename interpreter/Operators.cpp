@@ -324,10 +324,10 @@ Value unaryOperation(UnaryOp op, const Value& a) {
 
 namespace {
 
-int compareSequences(const ValueList& a, const ValueList& b);
+int compareSequences(const ValueList& a, const ValueList& b, int depth);
 
-// -1, 0, 1 like Python's ordering; LangError when the types are not ordered.
-int order(const Value& a, const Value& b) {
+// -1, 0, 1 like Python's ordering; LangError when the types are not ordered or nested too deep.
+int order(const Value& a, const Value& b, int depth = 0) {
   if (a.isNumber() && b.isNumber()) {
     if (isIntLike(a) && isIntLike(b)) {
       return a.asInt() < b.asInt() ? -1 : (a.asInt() > b.asInt() ? 1 : 0);
@@ -341,17 +341,21 @@ int order(const Value& a, const Value& b) {
     return c < 0 ? -1 : (c > 0 ? 1 : 0);
   }
   if ((a.isTuple() && b.isTuple()) || (a.isList() && b.isList())) {
-    return compareSequences(a.items(), b.items());
+    if (depth >= maxValueNesting) {
+      langError("LANG_DEPTH", "values nested too deeply to order (more than " +
+                                  std::to_string(maxValueNesting) + " levels)");
+    }
+    return compareSequences(a.items(), b.items(), depth);
   }
   langError("LANG_TYPE",
             "cannot order '" + a.typeName() + "' and '" + b.typeName() + "' (with <, >, <=, >=)");
 }
 
-int compareSequences(const ValueList& a, const ValueList& b) {
+int compareSequences(const ValueList& a, const ValueList& b, int depth) {
   std::size_t n = std::min(a.size(), b.size());
   for (std::size_t i = 0; i < n; ++i) {
     if (!a[i].equals(b[i])) {
-      return order(a[i], b[i]);
+      return order(a[i], b[i], depth + 1);
     }
   }
   return a.size() < b.size() ? -1 : (a.size() > b.size() ? 1 : 0);

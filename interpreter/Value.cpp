@@ -79,7 +79,9 @@ std::string formatReal(double d) {
   return s;
 }
 
-std::string quote(const std::string& s) {
+} // namespace
+
+std::string quoteString(const std::string& s) {
   char q = (s.find('\'') != std::string::npos && s.find('"') == std::string::npos) ? '"' : '\'';
   std::string out(1, q);
   for (char c : s) {
@@ -107,6 +109,16 @@ std::string quote(const std::string& s) {
   return out;
 }
 
+namespace {
+
+[[noreturn]] void tooDeep(const char* what) {
+  throw UserError(Diagnostic::fatal("LANG_DEPTH", std::string("value nested too deeply to ") + what +
+                                                      " (more than " + std::to_string(maxValueNesting) +
+                                                      " levels)")
+                      .withNote("a list, tuple or dict that contains itself or is nested this deep "
+                                "cannot be printed or compared"));
+}
+
 // Containers being printed, to print a list that contains itself as [...] like Python.
 using Visiting = std::vector<const void*>;
 
@@ -130,9 +142,9 @@ std::string reprSequence(const ValueList& items, const char* open, const char* c
 
 std::string reprOf(const Value& v, Visiting& visiting) {
   using K = Value::Kind;
-  constexpr std::size_t maxDepth = 100; // deeper containers print as ... (and cannot exhaust the stack)
-  if (visiting.size() > maxDepth && (v.isSequence() || v.isDict() || v.isFactor())) {
-    return "...";
+  if (visiting.size() >= static_cast<std::size_t>(maxValueNesting) &&
+      (v.isSequence() || v.isDict() || v.isFactor())) {
+    tooDeep("print");
   }
   switch (v.kind()) {
   case K::None:
@@ -148,7 +160,7 @@ std::string reprOf(const Value& v, Visiting& visiting) {
     return "(" + formatReal(c.real()) + (c.imag() < 0 ? "-" : "+") + formatReal(std::abs(c.imag())) + "j)";
   }
   case K::String:
-    return quote(v.asString());
+    return quoteString(v.asString());
   case K::Tuple: {
     visiting.push_back(nullptr); // depth marker (tuples cannot contain themselves)
     std::string out = reprSequence(v.items(), "(", ")", true, visiting);
@@ -210,6 +222,13 @@ std::string reprOf(const Value& v, Visiting& visiting) {
 
 bool equalsAt(const Value& a, const Value& b, int depth);
 
+bool checkedDepth(int depth) {
+  if (depth >= maxValueNesting) {
+    tooDeep("compare");
+  }
+  return true;
+}
+
 bool sequencesEqual(const ValueList& a, const ValueList& b, int depth) {
   if (a.size() != b.size()) {
     return false;
@@ -239,7 +258,6 @@ bool dictsEqual(const DictObject& a, const DictObject& b, int depth) {
 
 bool equalsAt(const Value& a, const Value& b, int depth) {
   using K = Value::Kind;
-  constexpr int maxDepth = 200; // deeper (or cyclic) structures compare by identity
   if (a.isNumber() && b.isNumber()) {
     if (a.isReal() || b.isReal()) {
       return a.asReal() == b.asReal();
@@ -264,11 +282,11 @@ bool equalsAt(const Value& a, const Value& b, int depth) {
   case K::String:
     return a.asString() == b.asString();
   case K::Tuple:
-    return depth < maxDepth && sequencesEqual(a.items(), b.items(), depth);
+    return checkedDepth(depth) && sequencesEqual(a.items(), b.items(), depth);
   case K::List:
-    return a.asList() == b.asList() || (depth < maxDepth && sequencesEqual(a.items(), b.items(), depth));
+    return a.asList() == b.asList() || (checkedDepth(depth) && sequencesEqual(a.items(), b.items(), depth));
   case K::Dict:
-    return a.asDict() == b.asDict() || (depth < maxDepth && dictsEqual(*a.asDict(), *b.asDict(), depth));
+    return a.asDict() == b.asDict() || (checkedDepth(depth) && dictsEqual(*a.asDict(), *b.asDict(), depth));
   case K::Factor:
     return a.asFactor() == b.asFactor();
   case K::Concept:
@@ -283,6 +301,65 @@ bool equalsAt(const Value& a, const Value& b, int depth) {
 }
 
 } // namespace
+
+Value& Value::operator=(const Value& other) {
+  if (this != &other) {
+    Value old(std::move(*this)); // keeps `other` alive if it is inside the old content
+    v_ = other.v_;
+  }
+  return *this;
+}
+
+Value& Value::operator=(Value&& other) noexcept {
+  if (this != &other) {
+    Value old(std::move(*this));
+    v_ = std::move(other.v_);
+  }
+  return *this;
+}
+
+bool Value::soleOwnerOfContainer() const {
+  switch (kind()) {
+  case Kind::Tuple:
+    return std::get<TupleValue>(v_).items.use_count() == 1;
+  case Kind::List:
+    return asList().use_count() == 1;
+  case Kind::Dict:
+    return asDict().use_count() == 1;
+  case Kind::Factor:
+    return asFactor().use_count() == 1;
+  default:
+    return false;
+  }
+}
+
+// Values whose container is to be freed by the outermost releaseContainer() on this thread.
+namespace {
+thread_local std::vector<Value>* pendingRelease = nullptr;
+}
+
+void Value::releaseContainer() noexcept {
+  if (!soleOwnerOfContainer()) {
+    return; // another value still holds it (or it is a moved-from empty pointer)
+  }
+  if (pendingRelease != nullptr) {
+    try {
+      pendingRelease->push_back(std::move(*this)); // freed later by the loop below
+    } catch (...) {
+      // out of memory: free it here, recursively
+    }
+    return;
+  }
+  std::vector<Value> pending;
+  pendingRelease = &pending;
+  v_ = NoneType{}; // frees this container; the containers it solely held are queued in `pending`
+  while (!pending.empty()) {
+    Value next = std::move(pending.back());
+    pending.pop_back();
+    next.v_ = NoneType{};
+  }
+  pendingRelease = nullptr;
+}
 
 std::string Value::repr() const {
   Visiting visiting;

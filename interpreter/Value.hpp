@@ -22,6 +22,14 @@ struct CallArguments;
 
 using ValueList = std::vector<Value>;
 
+// Deepest nesting of containers that printing, comparison and ordering follow (Python's default
+// recursion limit); deeper is the user error LANG_DEPTH.
+inline constexpr int maxValueNesting = 1000;
+
+// Python's repr() of a string: quoted with ' (or " when it contains ' but no "), with the
+// backslash escapes \\, \n, \r, \t and of the quote.
+std::string quoteString(const std::string& s);
+
 struct ListObject {
   ValueList items;
 };
@@ -129,6 +137,19 @@ public:
   Value(std::shared_ptr<Callable> c) : v_(std::move(c)) {}
   Value(std::shared_ptr<NativeObject> n) : v_(std::move(n)) {}
 
+  // Freeing a value frees the containers only it holds without recursion, so that a list
+  // nested 100000 deep (built in a loop) cannot exhaust the stack; assignment frees the old
+  // content the same way.
+  ~Value() {
+    if (holdsContainer()) {
+      releaseContainer();
+    }
+  }
+  Value(const Value&) = default;
+  Value(Value&&) noexcept = default;
+  Value& operator=(const Value& other);
+  Value& operator=(Value&& other) noexcept;
+
   static Value tuple(ValueList items) {
     return Value(TupleValue{std::make_shared<const ValueList>(std::move(items))});
   }
@@ -178,10 +199,19 @@ public:
   // The Python type name used in messages: 'int', 'float', 'str', 'tuple', '_F', or the
   // concept's catalogue type.
   std::string typeName() const;
-  // Python equality (1 == 1.0, tuples element-wise, concepts by identity).
+  // Python equality (1 == 1.0, tuples element-wise, concepts by identity). Containers nested
+  // deeper than maxValueNesting (or cyclic ones that are not identical) throw a UserError
+  // LANG_DEPTH without location, like repr().
   bool equals(const Value& other) const;
 
 private:
+  bool holdsContainer() const {
+    auto k = kind();
+    return k == Kind::Tuple || k == Kind::List || k == Kind::Dict || k == Kind::Factor;
+  }
+  bool soleOwnerOfContainer() const;
+  void releaseContainer() noexcept;
+
   std::variant<NoneType, bool, std::int64_t, double, std::complex<double>, std::string, TupleValue,
                std::shared_ptr<ListObject>, std::shared_ptr<DictObject>, std::shared_ptr<FactorObject>,
                std::shared_ptr<Concept>, std::shared_ptr<Callable>, std::shared_ptr<NativeObject>>
