@@ -24,8 +24,38 @@ void NewtonDriver::factorize(const MechanicalState& start, const Eigen::VectorXd
   (void)first;
   std::vector<Eigen::Triplet<double>> triplets;
   system_.assembler().run(start.displacement, du, start.points, option, {&triplets, nullptr, nullptr});
-  system_.solver().factorize(system_.matrix(triplets), !checked_, system_.behaviours().allSymmetric());
+  factorizeMatrix(triplets, start.displacement + du, !checked_);
   checked_ = true;
+}
+
+bool NewtonDriver::symmetric() const {
+  return system_.behaviours().allSymmetric() && (constraint_ == nullptr || constraint_->symmetric());
+}
+
+void NewtonDriver::factorizeMatrix(std::vector<Eigen::Triplet<double>>& triplets, const Eigen::VectorXd& u,
+                                   bool check) {
+  if (constraint_ != nullptr) {
+    Eigen::VectorXd unused = Eigen::VectorXd::Zero(u.size());
+    constraint_->addForces(u, unused, &triplets);
+  }
+  try {
+    system_.solver().factorize(system_.matrix(triplets), check, symmetric());
+  } catch (const UserError& e) {
+    const std::string note = constraint_ != nullptr ? constraint_->singularNote() : std::string();
+    if (note.empty() || e.first().id != "SOLVE_1") {
+      throw;
+    }
+    Diagnostic d = e.first();
+    throw UserError(std::move(d).withNote(note));
+  }
+}
+
+Eigen::VectorXd NewtonDriver::constraintForces(const Eigen::VectorXd& u) {
+  Eigen::VectorXd forces = Eigen::VectorXd::Zero(u.size());
+  if (constraint_ != nullptr) {
+    constraint_->addForces(u, forces, nullptr);
+  }
+  return forces;
 }
 
 StepOutcome NewtonDriver::step(const MechanicalState& start, double time, MechanicalState& end) {
@@ -37,6 +67,9 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
   Eigen::VectorXd du = Eigen::VectorXd::Zero(n);
   Eigen::VectorXd lambda = start.multipliers;
   StepOutcome out;
+  if (constraint_ != nullptr) {
+    constraint_->beginStep(start.displacement, time);
+  }
   log_ << fmt::format("   INST {:<12g}\n", time);
   log_ << "   ------------------------------------------------------------------------------\n";
   log_ << "   | ITER | RESI_GLOB_RELA | RESI_GLOB_MAXI | WHERE (MAXI)            | MATRIX    |\n";
@@ -59,7 +92,8 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
     end.points = start.points;
     system_.assembler().run(start.displacement, du, start.points, behaviour::Option::ResidualOnly,
                             {nullptr, &fint, nullptr});
-    Eigen::VectorXd r = fext - fint - system_.solver().transposeTimes(lambda);
+    Eigen::VectorXd r =
+        fext - fint - system_.solver().transposeTimes(lambda) + constraintForces(start.displacement);
     for (int i = 0; i < n; ++i) {
       if (eliminated[static_cast<std::size_t>(i)]) {
         r(i) = 0.0;
@@ -70,12 +104,18 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
     Eigen::VectorXd ddu;
     Eigen::VectorXd dl;
     system_.solver().solve(r, c, p, ddu, dl);
+    if (constraint_ != nullptr) {
+      constraint_->correct(start.displacement, ddu, dl, system_.solver());
+    }
     du += ddu;
     lambda += dl;
   }
-  for (int iter = 0; iter <= settings_.iterGlobMaxi; ++iter) {
-    const bool updateMatrix = settings_.tangentMatrix && settings_.reacIter > 0 &&
-                              iter < settings_.iterGlobMaxi && ((iter + 1) % settings_.reacIter == 0);
+  // The geometric loop of a constraint extends the iteration budget by ITER_GLOB_MAXI per
+  // re-pairing; the constraint bounds the number of re-pairings (ITER_GEOM_MAXI).
+  int lastIteration = settings_.iterGlobMaxi;
+  for (int iter = 0; iter <= lastIteration; ++iter) {
+    const bool updateMatrix = settings_.tangentMatrix && settings_.reacIter > 0 && iter < lastIteration &&
+                              ((iter + 1) % settings_.reacIter == 0);
     std::vector<Eigen::Triplet<double>> triplets;
     Eigen::VectorXd fint = Eigen::VectorXd::Zero(n);
     end.points = start.points;
@@ -89,8 +129,9 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
       return out;
     }
     const Eigen::VectorXd reactions = system_.solver().transposeTimes(lambda);
-    Eigen::VectorXd r = fext - fint - reactions;
-    Eigen::VectorXd reference = fext - reactions;
+    const Eigen::VectorXd forces = constraintForces(start.displacement + du);
+    Eigen::VectorXd r = fext - fint - reactions + forces;
+    Eigen::VectorXd reference = fext - reactions + forces;
     for (int i = 0; i < n; ++i) {
       if (eliminated[static_cast<std::size_t>(i)]) {
         reference(i) = fint(i);
@@ -108,12 +149,20 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
         n > 0 ? system_.dofs().describe(static_cast<int>(where), *system_.model().mesh) : "-";
     const bool ok = (settings_.resiGlobRela <= 0.0 || rela <= settings_.resiGlobRela) &&
                     (settings_.resiGlobMaxi <= 0.0 || maxi <= settings_.resiGlobMaxi);
-    log_ << fmt::format("   | {:4d} | {:14.6e} | {:14.6e} | {:<23} | {:<9} |\n", iter, rela, maxi,
-                        at.substr(0, 23), matrixNote);
+    log_ << fmt::format("   | {:4d} | {:14.6e} | {:14.6e} | {:<23} | {:<9} |{}\n", iter, rela, maxi,
+                        at.substr(0, 23), matrixNote,
+                        constraint_ != nullptr ? " " + constraint_->iterationNote() : std::string());
     out.iterations = iter;
     out.resiRela = rela;
     out.resiMaxi = maxi;
-    if (ok) {
+    const bool accepted =
+        ok && (constraint_ == nullptr || constraint_->acceptConvergence(start.displacement + du));
+    if (ok && !accepted) {
+      // The geometric loop paired again: at least one more correction with the new pairing.
+      log_ << "   |      | geometric update: contact pairing recomputed\n";
+      lastIteration = iter + 1 + settings_.iterGlobMaxi;
+    }
+    if (accepted) {
       out.converged = true;
       forceScale_ = std::max(forceScale_, denominator);
       end.time = time;
@@ -122,18 +171,21 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
       log_ << "   ------------------------------------------------------------------------------\n";
       return out;
     }
-    if (iter == settings_.iterGlobMaxi) {
+    if (iter == lastIteration) {
       break;
     }
     matrixNote = "";
     if (updateMatrix) {
-      system_.solver().factorize(system_.matrix(triplets), false, system_.behaviours().allSymmetric());
+      factorizeMatrix(triplets, start.displacement + du, false);
       matrixNote = "TANGENTE";
     }
     const Eigen::VectorXd c = g - system_.solver().times(start.displacement + du);
     Eigen::VectorXd ddu;
     Eigen::VectorXd dl;
     system_.solver().solve(r, c, Eigen::VectorXd::Zero(n), ddu, dl);
+    if (constraint_ != nullptr) {
+      constraint_->correct(start.displacement + du, ddu, dl, system_.solver());
+    }
     du += ddu;
     lambda += dl;
   }

@@ -9,6 +9,7 @@
 
 #include "solver/nonlinear/MechanicalSystem.hpp"
 #include "solver/nonlinear/PointState.hpp"
+#include "solver/nonlinear/StepConstraint.hpp"
 
 #include <ostream>
 #include <string>
@@ -48,13 +49,24 @@ public:
   // One step from `start` to `time`; on convergence `end` holds the new state.
   StepOutcome step(const MechanicalState& start, double time, MechanicalState& end);
 
+  // A condition solved with the mechanical equations (contact), or none (the default: nothing
+  // of it is called). Not owned.
+  void setConstraint(StepConstraint* constraint) { constraint_ = constraint; }
+
 private:
   void factorize(const MechanicalState& start, const Eigen::VectorXd& du, behaviour::Option option,
                  bool first);
+  // Factorises K (+ the constraint's tangent terms), adding the constraint's note to a
+  // singular-stiffness error.
+  void factorizeMatrix(std::vector<Eigen::Triplet<double>>& triplets, const Eigen::VectorXd& u, bool check);
+  // The constraint's forces at u (zero without a constraint).
+  Eigen::VectorXd constraintForces(const Eigen::VectorXd& u);
+  bool symmetric() const;
 
   MechanicalSystem& system_;
   NewtonSettings settings_;
   std::ostream& log_;
+  StepConstraint* constraint_ = nullptr;
   bool elasticFactorized_ = false;
   bool checked_ = false;
   double forceScale_ = 0.0; // largest RESI_GLOB_RELA reference of the converged steps

@@ -5,6 +5,7 @@
 // ETAT_INIT, ARCHIVAGE selections, contact and line search are refused as not implemented yet.
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/contact/ContactStepConstraint.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/functions/InstantList.hpp"
 #include "solver/model/Selection.hpp"
@@ -22,7 +23,7 @@ namespace stella {
 namespace {
 
 void refuseAbsent(const KeywordTree& kw) {
-  for (const char* k : {"CONTACT", "CARA_ELEM", "PILOTAGE", "ETAT_INIT", "RESULTAT"}) {
+  for (const char* k : {"CARA_ELEM", "PILOTAGE", "ETAT_INIT", "RESULTAT"}) {
     const FactorKeyword* f = kw.factor(k);
     if ((f != nullptr && !f->defaulted) || (f == nullptr && kw.simple(k) != nullptr)) {
       throw UserError(Diagnostic::fatal("SNL_1", fmt::format("STAT_NON_LINE {} is not implemented yet", k),
@@ -101,10 +102,13 @@ NewtonSettings settingsOf(const KeywordTree& kw) {
   return s;
 }
 
-void store(Result& result, const MechanicalState& s, const MechanicalSystem& system, bool first) {
+void store(Result& result, const MechanicalState& s, const MechanicalSystem& system,
+           const StepConstraint* constraint) {
   ResultStep& step = result.addStep(s.time, 0);
-  (void)first;
   storeMechanicalFields(step, system.model(), system.dofs(), s.displacement, s.points, true, true);
+  if (constraint != nullptr) {
+    constraint->store(step);
+  }
 }
 
 Value runStatNonLine(OperatorCall& call) {
@@ -118,21 +122,24 @@ Value runStatNonLine(OperatorCall& call) {
   const auto times = instantsOf(kw.occurrences("INCREMENT").front(), policy);
   NewtonSettings settings = settingsOf(kw);
   auto& msg = call.session.message();
+  const std::unique_ptr<StepConstraint> constraint = makeContactConstraint(kw, system);
   const bool linear = system.behaviours().allLinear();
   msg << fmt::format(
-      "   effects: {}, {} load(s), {} {} factorisation, {} Lagrange multiplier(s)\n",
+      "   effects: {}, {} load(s), {} {} factorisation, {} Lagrange multiplier(s), {}\n",
       linear ? "elasticity (no return mapping)"
              : fmt::format("{} (return mapping)", fmt::join(system.behaviours().relationNames(), ", ")),
       system.excitations().size(), system.behaviours().allSymmetric() ? "symmetric" : "unsymmetric",
-      settings.tangentMatrix ? "tangent" : "elastic", system.relationCount());
+      settings.tangentMatrix ? "tangent" : "elastic", system.relationCount(),
+      constraint != nullptr ? constraint->effects() : std::string("no contact"));
   auto result = std::make_shared<Result>();
   result->type = "evol_noli";
   result->mesh = model->mesh;
   result->model = std::const_pointer_cast<Model>(model);
   result->material = std::const_pointer_cast<MaterialField>(materials);
   NewtonDriver driver(system, settings, msg);
+  driver.setConstraint(constraint.get());
   MechanicalState state = driver.initialState(times.front());
-  store(*result, state, system, true);
+  store(*result, state, system, constraint.get());
   rememberLoads(result, system.excitations());
   Value made = call.makeConcept(result);
   for (std::size_t i = 1; i < times.size(); ++i) {
@@ -155,7 +162,10 @@ Value runStatNonLine(OperatorCall& call) {
                         "instants, or raise ITER_GLOB_MAXI"));
     }
     state = std::move(next);
-    store(*result, state, system, false);
+    if (constraint != nullptr) {
+      constraint->reportStep(msg);
+    }
+    store(*result, state, system, constraint.get());
     msg << fmt::format("   step {} INST {} converged in {} iteration(s), RESI_GLOB_RELA = {:.3e}\n", i,
                        times[i], o.iterations, o.resiRela);
   }
