@@ -56,34 +56,6 @@ std::optional<Value> Interpreter::global(const std::string& name) const {
 
 namespace {
 
-bool isFinCall(const Stmt& s) {
-  if (s.kind != StmtKind::Expr || s.exprs.empty()) {
-    return false;
-  }
-  const Expr& e = *s.exprs[0];
-  return e.kind == ExprKind::Call && e.items[0]->kind == ExprKind::Name && e.items[0]->text == "FIN";
-}
-
-// True when every syntax error lies after a top-level `FIN()`: the text after FIN is ignored.
-bool errorsOnlyAfterFin(const ParseResult& r) {
-  int finLine = 0;
-  for (const auto& s : r.module->body) {
-    if (isFinCall(*s)) {
-      finLine = std::max(s->endLine, s->pos.line);
-      break;
-    }
-  }
-  if (finLine == 0) {
-    return false;
-  }
-  for (const auto& d : r.errors) {
-    if (d.location.line <= finLine) {
-      return false;
-    }
-  }
-  return true;
-}
-
 Diagnostic abortDiagnostic(const std::string& message) {
   Diagnostic d = Diagnostic::fatal("INTERNAL", message);
   d.kind = FailureKind::Abort;

@@ -29,4 +29,9 @@ ParseResult parseFile(const std::shared_ptr<const SourceFile>& file, bool keepCo
 // blanks. On success `module->body` holds one Expr statement.
 ParseResult parseExpressionFile(const std::shared_ptr<const SourceFile>& file);
 
+// `FIN()` as a statement.
+bool isFinStatement(const Stmt& s);
+// True when every syntax error lies after a top-level `FIN()` (the text after FIN is ignored).
+bool errorsOnlyAfterFin(const ParseResult& r);
+
 } // namespace stella

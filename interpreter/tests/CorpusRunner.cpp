@@ -7,8 +7,9 @@
 //                              are checked when any expect-call line is present)
 //   # expect-status: completed|finished|syntax-error|failed
 // Modes: `FILE...` checks expectations; `--roundtrip PATH...` checks that every .comm under the
-// paths re-parses to the same tree after pretty-printing; `--no-crash PATH...` runs every file
-// through lexer, parser and evaluator and only requires that nothing crashes.
+// paths (found when the test runs, so files added later are covered) parses, unless it is
+// malformed on purpose, and re-parses to the same tree after pretty-printing; `--no-crash PATH...` runs every
+// file through lexer, parser and evaluator and only requires that nothing crashes.
 #include "FakeHandler.hpp"
 #include "interpreter/Formatter.hpp"
 #include "interpreter/Interpreter.hpp"
@@ -229,11 +230,35 @@ std::vector<std::string> commFiles(const std::vector<std::string>& paths, const 
   return out;
 }
 
-bool roundTrip(const std::string& path, int& checked) {
+// A file that does not parse is accepted only when it is malformed on purpose: a file of the
+// fuzzing corpus, a language test that expects a syntax error, or text after FIN() (ignored).
+bool malformedOnPurpose(const std::string& path, const SourceFile& file) {
+  if (path.find("/fuzz/corpus/") != std::string::npos) {
+    return true;
+  }
+  for (int l = 1; l <= file.lineCount(); ++l) {
+    std::string_view line = file.line(l);
+    if (line.find("# expect-error: SYNTAX") != std::string_view::npos ||
+        line.find("# expect-status: syntax-error") != std::string_view::npos) {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool roundTrip(const std::string& path, int& checked, int& malformed) {
   auto file = SourceFile::load(path);
   ParseResult first = parseFile(file, true);
   if (!first.errors.empty()) {
-    return true; // malformed on purpose: nothing to print
+    if (malformedOnPurpose(path, *file) || errorsOnlyAfterFin(first)) {
+      ++malformed;
+      return true; // nothing to print
+    }
+    std::cout << "FAIL " << path << ": does not parse:\n";
+    for (const auto& d : first.errors) {
+      std::cout << formatDiagnostic(d);
+    }
+    return false;
   }
   ++checked;
   std::string printed = formatModule(*first.module, first.comments);
@@ -300,10 +325,12 @@ int main(int argc, char** argv) {
   try {
     if (args[0] == "--roundtrip") {
       int checked = 0;
+      int malformed = 0;
       for (const auto& f : commFiles({args.begin() + 1, args.end()}, ".comm")) {
-        roundTrip(f, checked) ? ++passed : ++failures;
+        roundTrip(f, checked, malformed) ? ++passed : ++failures;
       }
-      std::cout << checked << " files printed and re-parsed\n";
+      std::cout << checked << " files printed and re-parsed, " << malformed
+                << " malformed on purpose (fuzzing corpus, syntax-error tests)\n";
     } else if (args[0] == "--no-crash") {
       for (const auto& f : commFiles({args.begin() + 1, args.end()}, "")) {
         noCrash(f) ? ++passed : ++failures;
