@@ -6,6 +6,7 @@
 #include "CatalogText.hpp"
 #include "CommandSpec.hpp"
 #include "Validator.hpp"
+#include "interpreter/StringEscape.hpp"
 
 #include <fmt/format.h>
 
@@ -173,30 +174,7 @@ void describeLevel(const Level& level, int indent, std::string& out) {
 }
 
 std::string jsonString(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    switch (c) {
-    case '"':
-      out += "\\\"";
-      break;
-    case '\\':
-      out += "\\\\";
-      break;
-    case '\n':
-      out += "\\n";
-      break;
-    case '\t':
-      out += "\\t";
-      break;
-    default:
-      if (static_cast<unsigned char>(c) < 0x20) {
-        out += fmt::format("\\u{:04x}", static_cast<int>(c));
-      } else {
-        out += c;
-      }
-    }
-  }
-  return out + "\"";
+  return quoted(s, '"', EscapeStyle::Json);
 }
 
 std::string jsonValue(const Value& v) {

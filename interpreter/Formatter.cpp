@@ -2,6 +2,7 @@
 // comments and blank-line groups, breaking long command calls one keyword per line aligned
 // after the '(' as code_aster users write them. Its output re-parses to the same tree.
 #include "Formatter.hpp"
+#include "StringEscape.hpp"
 
 #include "Parser.hpp"
 
@@ -297,37 +298,7 @@ std::string fstringText(const Expr& e) {
       out += "}";
       continue;
     }
-    for (char c : part->text) {
-      switch (c) {
-      case '{':
-        out += "{{";
-        break;
-      case '}':
-        out += "}}";
-        break;
-      case '\\':
-        out += "\\\\";
-        break;
-      case '\n':
-        out += "\\n";
-        break;
-      case '\t':
-        out += "\\t";
-        break;
-      case '\r':
-        out += "\\r";
-        break;
-      case '\'':
-      case '"':
-        if (quote.front() == c) {
-          out += '\\';
-        }
-        out += c;
-        break;
-      default:
-        out += c;
-      }
-    }
+    appendEscaped(out, part->text, quote.front(), EscapeStyle::FStringBody);
   }
   return out + quote;
 }

@@ -2,6 +2,7 @@
 #include "Value.hpp"
 
 #include "Diagnostics.hpp"
+#include "StringEscape.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -83,30 +84,7 @@ std::string formatReal(double d) {
 
 std::string quoteString(const std::string& s) {
   char q = (s.find('\'') != std::string::npos && s.find('"') == std::string::npos) ? '"' : '\'';
-  std::string out(1, q);
-  for (char c : s) {
-    switch (c) {
-    case '\\':
-      out += "\\\\";
-      break;
-    case '\n':
-      out += "\\n";
-      break;
-    case '\t':
-      out += "\\t";
-      break;
-    case '\r':
-      out += "\\r";
-      break;
-    default:
-      if (c == q) {
-        out += '\\';
-      }
-      out += c;
-    }
-  }
-  out += q;
-  return out;
+  return quoted(s, q, EscapeStyle::Python);
 }
 
 namespace {
