@@ -3,8 +3,10 @@
 // IMPR_RESU of a mesh, checked through the message file and the files written.
 
 #include "solver/io/MeshIO.hpp"
+#include "solver/io/tests/CommRun.hpp"
 #include "solver/io/tests/MeshTestUtil.hpp"
-#include "solver/job/BatchJob.hpp"
+#include "solver/mesh/GroupOperations.hpp"
+#include "solver/mesh/MeshGeometry.hpp"
 #include "solver/mesh/MeshTransform.hpp"
 #include "solver/mesh/StructuredMesher.hpp"
 
@@ -16,24 +18,8 @@
 namespace stella {
 namespace {
 
-struct CommRun {
-  JobDiagnostic diagnostic;
-  std::string message;
-};
-
-CommRun runComm(const std::filesystem::path& dir, const std::string& name, const std::string& comm,
-                const std::map<int, std::filesystem::path>& units) {
-  const auto file = dir / (name + ".comm");
-  std::ofstream(file) << comm;
-  RunOptions options;
-  options.echo = false;
-  options.workDirectory = dir / (name + ".work");
-  const JobResult r = runCommandFile(file, units, options);
-  std::ifstream in(dir / (name + ".mess"));
-  std::stringstream s;
-  s << in.rdbuf();
-  return {r.diagnostic, s.str()};
-}
+using testing::CommRun;
+using testing::runComm;
 
 TEST(MeshOperators, LireMaillageInEveryFormat) {
   const auto dir = testing::tempDir("lire");
