@@ -155,6 +155,28 @@ void vtuArray(std::ofstream& out, const std::string& name, const Field& f, const
   out << "        </DataArray>\n";
 }
 
+// Gauss-point and cell-node fields as cell data: the mean of each cell's points (0 for cells
+// without points), so that ParaView shows SIEF_ELGA without a plugin.
+Field cellMeans(const Field& f, std::size_t cellCount) {
+  Field m = Field::perCell(f.quantity(), f.components(), cellCount);
+  for (std::size_t c = 0; c < cellCount && c < f.cellCount(); ++c) {
+    const int n = f.pointCount(c);
+    for (std::size_t k = 0; k < f.componentCount(); ++k) {
+      double sum = 0.0;
+      int defined = 0;
+      for (int p = 0; p < n; ++p) {
+        const std::size_t e = f.firstPoint(c) + static_cast<std::size_t>(p);
+        if (!f.partial() || f.defined(e, k)) {
+          sum += f.value(e, k);
+          ++defined;
+        }
+      }
+      m.value(c, k) = defined > 0 ? sum / defined : 0.0;
+    }
+  }
+  return m;
+}
+
 void writeVtu(const std::filesystem::path& file, const Mesh& mesh, const ResultStep* step,
               const std::vector<std::string>& names, const ResultOutput& output) {
   auto out = openOut(file);
@@ -176,8 +198,14 @@ void writeVtu(const std::filesystem::path& file, const Mesh& mesh, const ResultS
   if (step != nullptr) {
     for (const auto& n : names) {
       const Field* f = step->field(n);
-      if (f != nullptr && f->support() == FieldSupport::Cell && !kept(*f, output).empty()) {
-        vtuArray(out, n, *f, kept(*f, output), static_cast<std::size_t>(mesh.cellCount()));
+      if (f == nullptr || f->support() == FieldSupport::Node || kept(*f, output).empty()) {
+        continue;
+      }
+      const auto cells = static_cast<std::size_t>(mesh.cellCount());
+      if (f->support() == FieldSupport::Cell) {
+        vtuArray(out, n, *f, kept(*f, output), cells);
+      } else {
+        vtuArray(out, n, cellMeans(*f, cells), kept(*f, output), cells);
       }
     }
   }

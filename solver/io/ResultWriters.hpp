@@ -41,8 +41,9 @@ void writeMedResult(const std::filesystem::path& file, const Mesh& mesh, const s
                     const Result* result, const ResultOutput& output, bool append = false);
 
 // One .vtu per step (<stem>_<NUME_ORDRE>.vtu beside `pvdFile`) and the .pvd collection with the
-// times; nodal and per-cell fields as point and cell data (one array per field, its components
-// as the tuple; partial components as 0). Returns the files written.
+// times; nodal fields as point data, per-cell fields as cell data, Gauss-point and cell-node
+// fields as cell data holding the mean of each cell's points (one array per field, its
+// components as the tuple; partial components as 0). Returns the files written.
 std::vector<std::filesystem::path> writeVtuResult(const std::filesystem::path& pvdFile, const Mesh& mesh,
                                                   const Result* result, const ResultOutput& output);
 

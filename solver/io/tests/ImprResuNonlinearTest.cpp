@@ -1,7 +1,8 @@
 // IMPR_RESU of a STAT_NON_LINE result (evol_noli) to MED, read back by independent readers:
 // meshio (DEPL, SIEF_ELGA, step times) and h5py (MED's raw layout: NUME_ORDRE, INST, Gauss-point
 // values), each compared with the closed form of the problem AND with the values stella printed
-// through IMPR_RESU FORMAT='RESULTAT' in the .resu file.
+// through IMPR_RESU FORMAT='RESULTAT' in the .resu file; the same result as VTU/PVD read by
+// meshio.
 //
 // Problem: a 2 x 1 x 1 bar of two HEXA8, VMIS_ISOT_LINE (E = 200000, NU = 0.3, SY = 200,
 // D_SIGM_EPSI = 20000), symmetry planes x = 0, y = 0, z = 0, the end x = 2 pulled so that
@@ -53,6 +54,7 @@ RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, EXCIT=(_F(CHARGE=BC), _F(CHARGE=P
                      INCREMENT=_F(LIST_INST=TIMES))
 IMPR_RESU(FORMAT='MED', UNITE=80, RESU=_F(RESULTAT=RESU, NOM_CHAM=('DEPL', 'SIEF_ELGA')))
 IMPR_RESU(FORMAT='RESULTAT', RESU=_F(RESULTAT=RESU, NOM_CHAM=('DEPL', 'SIEF_ELGA')))
+IMPR_RESU(FORMAT='VTU', RESU=_F(RESULTAT=RESU, NOM_CHAM=('DEPL', 'SIEF_ELGA')))
 FIN()
 )py";
 
@@ -135,6 +137,39 @@ assert worst_table < 1e-6, worst_table
 print("OK")
 )py";
 
+// argv: the .pvd (unit 81 in the work directory; the .vtu files beside it). The collection lists
+// every step with its time; meshio reads each .vtu: DEPL as point data, SIEF_ELGA as cell data
+// (the mean of the cell's Gauss points).
+const char* const vtuCheck = R"py(
+import sys, os, numpy as np, meshio, xml.etree.ElementTree as ET
+E, NU, SY, HARD = 2.0e5, 0.3, 200.0, 2.0e4
+def closed(t):
+    eps = 1e-3 * np.interp(t, [0, 1, 2, 3], [0, 1, 3, 2])
+    if t <= 1: s = E * eps
+    elif t <= 2: s = SY + HARD * (eps - SY / E)
+    else: s = SY + HARD * (3e-3 - SY / E) - E * (3e-3 - eps)
+    return eps, s, eps - s / E
+pvd = sys.argv[1]
+sets = ET.parse(pvd).getroot().find("Collection").findall("DataSet")
+times = [float(d.get("timestep")) for d in sets]
+assert np.allclose(times, [0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0], rtol=0, atol=1e-15), times
+worst = 0.0
+for d, t in zip(sets, times):
+    m = meshio.read(os.path.join(os.path.dirname(pvd), d.get("file")))
+    eps, s, ep = closed(t)
+    lateral = -NU * s / E - ep / 2
+    p = m.points
+    ref = np.column_stack([eps * p[:, 0], lateral * p[:, 1], lateral * p[:, 2]])
+    worst = max(worst, abs(m.point_data["DEPL"] - ref).max() / max(abs(ref).max(), 1e-3))
+    sief = m.cell_data["SIEF_ELGA"][0]
+    assert sief.shape == (2, 6), sief.shape
+    sref = np.zeros(6); sref[0] = s
+    worst = max(worst, abs(sief - sref).max() / 240.0)
+print("worst %.2e" % worst)
+assert worst < 1e-9, worst
+print("OK")
+)py";
+
 TEST(ImprResuNonlinear, MedOfStatNonLineReadByMeshioAndH5py) {
   const auto dir = testing::tempDir("impr_snl");
   writeMedMesh(dir / "bar.med", volumeWithNodeGroups({CellType::HEXA8, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}}),
@@ -143,6 +178,8 @@ TEST(ImprResuNonlinear, MedOfStatNonLineReadByMeshioAndH5py) {
   ASSERT_EQ(r.diagnostic, JobDiagnostic::Ok) << r.message;
   EXPECT_EQ(
       testing::runPython(dir, barCheck, (dir / "bar.rmed").string() + " " + (dir / "bar.resu").string()), 0);
+  // FORMAT='VTU' (catalogue extension, default unit 81).
+  EXPECT_EQ(testing::runPython(dir, vtuCheck, (dir / "bar.work" / "fort.81").string()), 0);
 }
 
 } // namespace
