@@ -1,6 +1,11 @@
-// Gmsh .msh reader: formats 2.2 and 4.1, ASCII (binary files are refused with MESHFILE_5).
-// Physical groups become cell groups (named by $PhysicalNames, else "GM<tag>") and node groups
-// of the same name; node and cell names are N<tag> and M<tag> from the file's tags.
+// Gmsh .msh reader: formats 2.2 and 4.1, ASCII and binary (gmsh -bin; little-endian, data size
+// 8). Physical groups become cell groups (named by $PhysicalNames, else "GM<tag>") and node
+// groups of the same name; node and cell names are N<tag> and M<tag> from the file's tags.
+//
+// Binary files keep the section markers, $PhysicalNames and (in 2.2) the node and element counts
+// as text; the rest is raw: in 2.2 every integer is a 4-byte int; in 4.1 tags of entities,
+// dimensions, types and physical tags are 4-byte ints while counts and node and element tags
+// are 8-byte size_t. Numbers reads either representation through one interface.
 
 #include "solver/io/GmshCellTypes.hpp"
 #include "solver/io/MeshFileError.hpp"
@@ -14,6 +19,30 @@
 namespace stella {
 
 namespace {
+
+// Numbers of a section, text or binary. int32() is a C int in binary files, size() a size_t.
+class Numbers {
+public:
+  Numbers(TextScanner& s, bool binary) : s_(s), binary_(binary) {}
+  TextScanner& scanner() { return s_; }
+  bool binary() const { return binary_; }
+  // Start of a binary block: its data begins after the current line.
+  void start() {
+    if (binary_) {
+      s_.startBinary();
+    }
+  }
+  std::int64_t int32(const char* what) { return binary_ ? s_.binaryInteger(4, what) : s_.integer(what); }
+  std::int64_t size(const char* what) { return binary_ ? s_.binaryInteger(8, what) : s_.integer(what); }
+  std::int64_t count(const char* what, std::int64_t bytesPerItem) {
+    return binary_ ? s_.binaryCount(what, bytesPerItem) : s_.count(what, bytesPerItem);
+  }
+  double real(const char* what) { return binary_ ? s_.binaryReal(what) : s_.real(what); }
+
+private:
+  TextScanner& s_;
+  bool binary_;
+};
 
 // Maps the file's node tags to node indices, densely when the tags allow it.
 class NodeTags {
@@ -55,8 +84,14 @@ std::string groupName(const GmshContent& g, int dim, int tag) {
   return it != g.physicalNames.end() ? it->second : "GM" + std::to_string(tag);
 }
 
-void skipSection(TextScanner& s, std::string_view name) {
+void skipSection(TextScanner& s, std::string_view name, bool binary) {
   const std::string end = "$End" + std::string(name.substr(1));
+  if (binary) {
+    if (!s.skipPastLine(end)) {
+      s.fail("section " + std::string(name) + " has no " + end);
+    }
+    return;
+  }
   for (auto t = s.next(); t != end; t = s.next()) {
     if (t.empty()) {
       s.fail("section " + std::string(name) + " has no " + end);
@@ -85,11 +120,11 @@ void readPhysicalNames(TextScanner& s, GmshContent& g) {
   expectEnd(s, "$EndPhysicalNames");
 }
 
-Point3 readPoint(TextScanner& s, GmshContent& g) {
+Point3 readPoint(Numbers& r, GmshContent& g) {
   Point3 x{};
-  x[0] = s.real("node x coordinate");
-  x[1] = s.real("node y coordinate");
-  x[2] = s.real("node z coordinate");
+  x[0] = r.real("node x coordinate");
+  x[1] = r.real("node y coordinate");
+  x[2] = r.real("node z coordinate");
   g.allZero = g.allZero && x[2] == 0.0;
   return x;
 }
@@ -99,7 +134,9 @@ void addNode(TextScanner& s, GmshContent& g, std::int64_t tag, const Point3& x) 
   g.nodes.add(tag, id, s);
 }
 
-CellId addElement(TextScanner& s, GmshContent& g, std::int64_t tag, int gmshType) {
+// The element's node tags are read as int (2.2) or size_t (4.1) values.
+CellId addElement(Numbers& r, GmshContent& g, std::int64_t tag, int gmshType, bool sizeTags) {
+  TextScanner& s = r.scanner();
   const auto type = cellTypeFromGmsh(gmshType);
   if (!type) {
     s.failContent("element " + std::to_string(tag) + " has Gmsh type " + std::to_string(gmshType) +
@@ -108,7 +145,8 @@ CellId addElement(TextScanner& s, GmshContent& g, std::int64_t tag, int gmshType
   const int n = nodeCount(*type);
   NodeId gmshNodes[27];
   for (int i = 0; i < n; ++i) {
-    gmshNodes[i] = g.nodes.find(s.integer("element node tag"), s);
+    const auto t = sizeTags ? r.size("element node tag") : r.int32("element node tag");
+    gmshNodes[i] = g.nodes.find(t, s);
   }
   NodeId nodes[27];
   const auto perm = gmshPermutation(*type);
@@ -129,25 +167,39 @@ CellId addElement(TextScanner& s, GmshContent& g, std::int64_t tag, int gmshType
 
 // ---- format 2.2
 
-void readNodes22(TextScanner& s, GmshContent& g) {
-  const auto n = s.count("number of nodes", 8);
+void readNodes22(Numbers& r, GmshContent& g) {
+  TextScanner& s = r.scanner();
+  const auto n = s.count("number of nodes", r.binary() ? 28 : 8);
   g.mesh.reserveNodes(static_cast<NodeId>(n));
+  r.start();
   for (std::int64_t i = 0; i < n; ++i) {
-    const auto tag = s.integer("node tag");
-    addNode(s, g, tag, readPoint(s, g));
+    const auto tag = r.int32("node tag");
+    addNode(s, g, tag, readPoint(r, g));
   }
   expectEnd(s, "$EndNodes");
 }
 
+void addElement22(Numbers& r, GmshContent& g, std::int64_t tag, int type, int physical) {
+  const CellId c = addElement(r, g, tag, type, false);
+  if (physical != 0) {
+    g.groups[groupName(g, dimension(*cellTypeFromGmsh(type)), physical)].push_back(c);
+  }
+}
+
+void checkTagCount(TextScanner& s, std::int64_t tag, std::int64_t ntags) {
+  if (ntags < 0 || ntags > 100) {
+    s.failContent("element " + std::to_string(tag) + " has " + std::to_string(ntags) + " tags");
+  }
+}
+
 void readElements22(TextScanner& s, GmshContent& g) {
+  Numbers r(s, false);
   const auto n = s.count("number of elements", 8);
   for (std::int64_t i = 0; i < n; ++i) {
     const auto tag = s.integer("element tag");
     const int type = static_cast<int>(s.integer("element type"));
     const auto ntags = s.integer("number of element tags");
-    if (ntags < 0 || ntags > 100) {
-      s.failContent("element " + std::to_string(tag) + " has " + std::to_string(ntags) + " tags");
-    }
+    checkTagCount(s, tag, ntags);
     int physical = 0;
     for (std::int64_t k = 0; k < ntags; ++k) {
       const auto v = s.integer("element tag value");
@@ -155,68 +207,98 @@ void readElements22(TextScanner& s, GmshContent& g) {
         physical = static_cast<int>(v);
       }
     }
-    const auto celltype = cellTypeFromGmsh(type);
-    const CellId c = addElement(s, g, tag, type);
-    if (physical != 0) {
-      g.groups[groupName(g, dimension(*celltype), physical)].push_back(c);
+    addElement22(r, g, tag, type, physical);
+  }
+  expectEnd(s, "$EndElements");
+}
+
+// Binary 2.2: blocks of elements of one type, each headed by (type, count, number of tags).
+void readElements22Binary(TextScanner& s, GmshContent& g) {
+  Numbers r(s, true);
+  const auto n = s.count("number of elements", 12);
+  r.start();
+  std::int64_t read = 0;
+  while (read < n) {
+    const int type = static_cast<int>(r.int32("element type"));
+    const auto follow = r.int32("number of elements in block");
+    const auto ntags = r.int32("number of element tags");
+    if (follow <= 0 || follow > n - read) {
+      s.failContent("an element block holds " + std::to_string(follow) + " elements, " +
+                    std::to_string(n - read) + " remain to be read");
     }
+    for (std::int64_t i = 0; i < follow; ++i) {
+      const auto tag = r.int32("element tag");
+      checkTagCount(s, tag, ntags);
+      int physical = 0;
+      for (std::int64_t k = 0; k < ntags; ++k) {
+        const auto v = r.int32("element tag value");
+        if (k == 0) {
+          physical = static_cast<int>(v);
+        }
+      }
+      addElement22(r, g, tag, type, physical);
+    }
+    read += follow;
   }
   expectEnd(s, "$EndElements");
 }
 
 // ---- format 4.1
 
-void readEntities41(TextScanner& s, GmshContent& g) {
+void readEntities41(Numbers& r, GmshContent& g) {
+  r.start();
   std::int64_t counts[4];
   for (auto& c : counts) {
-    c = s.count("number of entities", 8);
+    c = r.count("number of entities", 8);
   }
   for (int dim = 0; dim < 4; ++dim) {
     for (std::int64_t i = 0; i < counts[dim]; ++i) {
-      const int tag = static_cast<int>(s.integer("entity tag"));
+      const int tag = static_cast<int>(r.int32("entity tag"));
       const int reals = dim == 0 ? 3 : 6;
       for (int k = 0; k < reals; ++k) {
-        s.real("entity bounding box");
+        r.real("entity bounding box");
       }
-      const auto nphys = s.count("number of physical tags", 2);
+      const auto nphys = r.count("number of physical tags", 2);
       auto& phys = g.entityPhysicals[{dim, tag}];
       for (std::int64_t k = 0; k < nphys; ++k) {
-        phys.push_back(static_cast<int>(s.integer("physical tag")));
+        phys.push_back(static_cast<int>(r.int32("physical tag")));
       }
       if (dim > 0) {
-        const auto nb = s.count("number of bounding entities", 2);
+        const auto nb = r.count("number of bounding entities", 2);
         for (std::int64_t k = 0; k < nb; ++k) {
-          s.integer("bounding entity tag");
+          r.int32("bounding entity tag");
         }
       }
     }
   }
-  expectEnd(s, "$EndEntities");
+  expectEnd(r.scanner(), "$EndEntities");
 }
 
-void readNodes41(TextScanner& s, GmshContent& g) {
-  const auto blocks = s.count("number of node blocks", 8);
-  const auto total = s.count("number of nodes", 8);
-  s.integer("minimum node tag");
-  s.integer("maximum node tag");
+void readNodes41(Numbers& r, GmshContent& g) {
+  TextScanner& s = r.scanner();
+  r.start();
+  const auto blocks = r.count("number of node blocks", 8);
+  const auto total = r.count("number of nodes", 8);
+  r.size("minimum node tag");
+  r.size("maximum node tag");
   g.mesh.reserveNodes(static_cast<NodeId>(total));
   std::vector<std::int64_t> tags;
   for (std::int64_t b = 0; b < blocks; ++b) {
-    const auto dim = s.integer("entity dimension");
-    s.integer("entity tag");
-    const auto parametric = s.integer("parametric flag");
-    const auto n = s.count("number of nodes in block", 8);
+    const auto dim = r.int32("entity dimension");
+    r.int32("entity tag");
+    const auto parametric = r.int32("parametric flag");
+    const auto n = r.count("number of nodes in block", 8);
     if (dim < 0 || dim > 3 || parametric < 0 || parametric > 1) {
       s.failContent("bad node block header");
     }
     tags.resize(static_cast<std::size_t>(n));
     for (auto& t : tags) {
-      t = s.integer("node tag");
+      t = r.size("node tag");
     }
     for (const auto t : tags) {
-      addNode(s, g, t, readPoint(s, g));
+      addNode(s, g, t, readPoint(r, g));
       for (std::int64_t k = 0; k < parametric * dim; ++k) {
-        s.real("node parametric coordinate");
+        r.real("node parametric coordinate");
       }
     }
   }
@@ -227,21 +309,23 @@ void readNodes41(TextScanner& s, GmshContent& g) {
   expectEnd(s, "$EndNodes");
 }
 
-void readElements41(TextScanner& s, GmshContent& g) {
-  const auto blocks = s.count("number of element blocks", 8);
-  const auto total = s.count("number of elements", 4);
-  s.integer("minimum element tag");
-  s.integer("maximum element tag");
+void readElements41(Numbers& r, GmshContent& g) {
+  TextScanner& s = r.scanner();
+  r.start();
+  const auto blocks = r.count("number of element blocks", 8);
+  const auto total = r.count("number of elements", 4);
+  r.size("minimum element tag");
+  r.size("maximum element tag");
   std::int64_t read = 0;
   for (std::int64_t b = 0; b < blocks; ++b) {
-    const int dim = static_cast<int>(s.integer("entity dimension"));
-    const int entity = static_cast<int>(s.integer("entity tag"));
-    const int type = static_cast<int>(s.integer("element type"));
-    const auto n = s.count("number of elements in block", 4);
+    const int dim = static_cast<int>(r.int32("entity dimension"));
+    const int entity = static_cast<int>(r.int32("entity tag"));
+    const int type = static_cast<int>(r.int32("element type"));
+    const auto n = r.count("number of elements in block", 4);
     const auto it = g.entityPhysicals.find({dim, entity});
     for (std::int64_t i = 0; i < n; ++i) {
-      const auto tag = s.integer("element tag");
-      const CellId c = addElement(s, g, tag, type);
+      const auto tag = r.size("element tag");
+      const CellId c = addElement(r, g, tag, type, true);
       if (it != g.entityPhysicals.end()) {
         for (const int p : it->second) {
           g.groups[groupName(g, dim, p)].push_back(c);
@@ -274,24 +358,43 @@ Mesh readGmshMesh(const std::filesystem::path& file) {
                        " is not supported (not implemented yet: only 2.2 and 4.1)",
                    s.line());
   }
-  if (s.integer("file type") != 0) {
-    throwFileError("MESHFILE_5", file, "binary Gmsh files are not implemented yet (write ASCII: gmsh -bin 0)",
-                   s.line());
+  const auto fileType = s.integer("file type");
+  const auto dataSize = s.integer("data size");
+  const bool binary = fileType == 1;
+  if (fileType != 0 && !binary) {
+    s.failContent("file type " + std::to_string(fileType) + " is neither 0 (ASCII) nor 1 (binary)");
   }
-  s.integer("data size");
+  if (binary) {
+    if (dataSize != 8) {
+      throwFileError("MESHFILE_5", file,
+                     "binary Gmsh files with data size " + std::to_string(dataSize) +
+                         " are not implemented yet (only 8)",
+                     s.line());
+    }
+    s.startBinary();
+    const auto one = s.binaryInteger(4, "the binary byte-order mark (int 1)");
+    if (one != 1) {
+      throwFileError(
+          "MESHFILE_5", file,
+          "the binary byte-order mark reads " + std::to_string(one) +
+              " instead of 1: big-endian Gmsh files are not implemented yet, or the file is damaged",
+          s.line());
+    }
+  }
   expectEnd(s, "$EndMeshFormat");
+  Numbers numbers(s, binary);
   bool sawNodes = false;
   bool sawElements = false;
   for (auto t = s.next(); !t.empty(); t = s.next()) {
     if (t == "$PhysicalNames") {
       readPhysicalNames(s, g);
     } else if (t == "$Entities" && v4) {
-      readEntities41(s, g);
+      readEntities41(numbers, g);
     } else if (t == "$Nodes") {
       if (sawNodes) {
         s.fail("a second $Nodes section");
       }
-      v4 ? readNodes41(s, g) : readNodes22(s, g);
+      v4 ? readNodes41(numbers, g) : readNodes22(numbers, g);
       sawNodes = true;
     } else if (t == "$Elements") {
       if (!sawNodes) {
@@ -300,10 +403,14 @@ Mesh readGmshMesh(const std::filesystem::path& file) {
       if (sawElements) {
         s.fail("a second $Elements section");
       }
-      v4 ? readElements41(s, g) : readElements22(s, g);
+      if (v4) {
+        readElements41(numbers, g);
+      } else {
+        binary ? readElements22Binary(s, g) : readElements22(s, g);
+      }
       sawElements = true;
     } else if (t.size() > 1 && t[0] == '$' && t.substr(0, 4) != "$End") {
-      skipSection(s, t);
+      skipSection(s, t, binary);
     } else {
       s.fail("expected a section ($Nodes, $Elements...), found '" + std::string(t.substr(0, 40)) + "'");
     }

@@ -1,5 +1,6 @@
 #pragma once
-// Reading and writing meshes: Gmsh .msh (2.2 and 4.1 ASCII), ASTER .mail, MED (libmedC).
+// Reading and writing meshes: Gmsh .msh (2.2 and 4.1, ASCII or binary), ASTER .mail, MED
+// (libmedC).
 // Every reader returns a Mesh in code_aster's node orderings, or throws UserError (MESHFILE_*,
 // see MeshFileError.hpp) naming the file and the problem; readers never crash on damaged files.
 //

@@ -4,9 +4,11 @@
 
 #include "solver/io/MeshFileError.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 
 namespace stella {
 
@@ -134,6 +136,64 @@ std::int64_t TextScanner::count(const char* what, std::int64_t bytesPerItem) {
     failContent(std::string(what) + " is negative (" + std::to_string(n) + ")");
   }
   if (n > static_cast<std::int64_t>(text_.size()) / std::max<std::int64_t>(1, bytesPerItem) + 1) {
+    failContent(std::string(what) + " is " + std::to_string(n) +
+                ", more than the file can hold (truncated file?)");
+  }
+  return n;
+}
+
+void TextScanner::startBinary() {
+  if (pos_ < text_.size() && text_[pos_] == '\r') {
+    ++pos_;
+  }
+  if (pos_ < text_.size() && text_[pos_] == '\n') {
+    ++pos_;
+    ++line_;
+  }
+}
+
+bool TextScanner::skipPastLine(std::string_view marker) {
+  const std::string needle = "\n" + std::string(marker);
+  const std::size_t at = text_.find(needle, pos_);
+  if (at == std::string::npos) {
+    return false;
+  }
+  pos_ = at + needle.size();
+  return true;
+}
+
+std::int64_t TextScanner::binaryInteger(int bytes, const char* what) {
+  if (pos_ + static_cast<std::size_t>(bytes) > text_.size()) {
+    fail(std::string("unexpected end of file, expected ") + what);
+  }
+  std::int64_t v = 0;
+  if (bytes == 4) {
+    std::int32_t i = 0;
+    std::memcpy(&i, text_.data() + pos_, 4);
+    v = i;
+  } else {
+    std::memcpy(&v, text_.data() + pos_, 8);
+  }
+  pos_ += static_cast<std::size_t>(bytes);
+  return v;
+}
+
+double TextScanner::binaryReal(const char* what) {
+  if (pos_ + 8 > text_.size()) {
+    fail(std::string("unexpected end of file, expected ") + what);
+  }
+  double v = 0.0;
+  std::memcpy(&v, text_.data() + pos_, 8);
+  pos_ += 8;
+  if (!std::isfinite(v)) {
+    failContent(std::string(what) + " is not a finite number");
+  }
+  return v;
+}
+
+std::int64_t TextScanner::binaryCount(const char* what, std::int64_t bytesPerItem) {
+  const std::int64_t n = binaryInteger(8, what);
+  if (n < 0 || n > static_cast<std::int64_t>(text_.size()) / std::max<std::int64_t>(1, bytesPerItem) + 1) {
     failContent(std::string(what) + " is " + std::to_string(n) +
                 ", more than the file can hold (truncated file?)");
   }

@@ -2,6 +2,8 @@
 // Token reader for the text mesh formats (Gmsh .msh ASCII, ASTER .mail): whitespace-separated
 // tokens with line numbers, optional comment character, double-quoted strings as one token, and
 // typed reads that raise MESHFILE_2 naming the file and line on any malformed number.
+// Formats that mix text and binary blocks (Gmsh binary .msh) read raw little-endian values with
+// the binary* functions after startBinary().
 
 #include <cstdint>
 #include <filesystem>
@@ -31,6 +33,18 @@ public:
   double real(const char* what); // finite values only
   // A count that cannot exceed what the file could hold (guards allocations on damaged files).
   std::int64_t count(const char* what, std::int64_t bytesPerItem = 2);
+
+  // Binary blocks: startBinary() steps over the line end that follows the last token (binary
+  // data starts on the next byte); the binary* reads then consume raw little-endian values,
+  // failing with MESHFILE_2 at the end of the file. Tokens may be read again afterwards.
+  void startBinary();
+  // Moves past the next occurrence of `marker` preceded by a line end (binary blocks of unknown
+  // layout); false when the file has none.
+  bool skipPastLine(std::string_view marker);
+  std::int64_t binaryInteger(int bytes, const char* what); // signed, 4 or 8 bytes
+  double binaryReal(const char* what);                     // 8 bytes, finite values only
+  // A binary count (8 bytes) that cannot exceed what the file could hold, as count().
+  std::int64_t binaryCount(const char* what, std::int64_t bytesPerItem);
 
   [[noreturn]] void fail(const std::string& what) const;
   [[noreturn]] void failContent(const std::string& what) const;
