@@ -1,9 +1,11 @@
 // DEFI_GROUP: creates and destroys groups of cells and nodes of a mesh, in place (reuse=MA as in
 // code_aster: models built on the mesh see the new groups). Order: DETR_GROUP_MA, DETR_GROUP_NO,
-// CREA_GROUP_MA, CREA_GROUP_NO, each occurrence in turn.
+// CREA_GROUP_MA, CREA_GROUP_NO, each occurrence in turn. INCLUSION and GRILLE are refused as not
+// implemented yet.
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/database/MeshConcept.hpp"
+#include "solver/database/Result.hpp"
 #include "solver/mesh/GroupOperations.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 #include "solver/session/OperatorRegistry.hpp"
@@ -11,6 +13,7 @@
 
 #include <fmt/format.h>
 
+#include <limits>
 #include <numeric>
 
 namespace stella {
@@ -77,10 +80,18 @@ Point3 vectorOf(const std::vector<double>& v) {
   return {v.empty() ? 0.0 : v[0], v.size() < 2 ? 0.0 : v[1], v.size() < 3 ? 0.0 : v[2]};
 }
 
-// POINT, or the single node of GROUP_NO_CENTRE.
+// POINT, the node NOEUD_CENTRE, or the single node of GROUP_NO_CENTRE.
 Point3 centreOf(const Mesh& m, const KeywordTree& occ) {
   if (occ.has("POINT")) {
     return vectorOf(occ.reals("POINT"));
+  }
+  if (occ.has("NOEUD_CENTRE")) {
+    const auto name = occ.text("NOEUD_CENTRE");
+    const auto id = m.findNode(name);
+    if (!id) {
+      fail("DEFI_GROUP_2", "the mesh has no node named '" + name + "'", occ.locationOf("NOEUD_CENTRE"));
+    }
+    return m.point(*id);
   }
   if (occ.has("GROUP_NO_CENTRE")) {
     const auto nodes = nodeGroup(m, occ.text("GROUP_NO_CENTRE"), occ.locationOf("GROUP_NO_CENTRE"));
@@ -89,7 +100,7 @@ Point3 centreOf(const Mesh& m, const KeywordTree& occ) {
     }
     return m.point(nodes.front());
   }
-  fail("DEFI_GROUP_4", "NOEUD_CENTRE is not implemented yet: give POINT or GROUP_NO_CENTRE", occ.location());
+  fail("DEFI_GROUP_3", "give POINT, NOEUD_CENTRE or GROUP_NO_CENTRE", occ.location());
 }
 
 Point3 directionOf(const KeywordTree& occ) {
@@ -174,6 +185,131 @@ std::vector<CellId> creaGroupMaCells(const Mesh& m, const KeywordTree& occ) {
     cells = optionCells(m, occ);
   }
   return filterCellType(m, cells, occ.textOr("TYPE_MAILLE", "TOUT"));
+}
+
+// INTERVALLE_VALE: the values of component NOM_CMP at every node (nullopt where it is not
+// defined), from the nodal field of a result's step, or the coordinates X, Y, Z.
+std::vector<std::optional<double>> nodalValues(const Mesh& m, const KeywordTree& occ) {
+  const std::string cmp = occ.text("NOM_CMP");
+  std::vector<std::optional<double>> v(static_cast<std::size_t>(m.nodeCount()));
+  if (occ.has("CHAM_GD")) {
+    fail("DEFI_GROUP_4", "INTERVALLE_VALE with CHAM_GD is not implemented yet", occ.locationOf("CHAM_GD"),
+         "give RESULTAT= (with NOM_CHAM, NUME_ORDRE or INST), or NOM_CMP X, Y or Z for the coordinates");
+  }
+  if (!occ.has("RESULTAT")) {
+    const std::map<std::string, std::size_t> axes{{"X", 0}, {"Y", 1}, {"Z", 2}};
+    const auto it = axes.find(cmp);
+    if (it == axes.end()) {
+      fail("DEFI_GROUP_9",
+           "INTERVALLE_VALE without RESULTAT reads the coordinates: NOM_CMP must be X, Y or Z",
+           occ.locationOf("NOM_CMP"));
+    }
+    for (NodeId n = 0; n < m.nodeCount(); ++n) {
+      v[static_cast<std::size_t>(n)] = m.point(n)[it->second];
+    }
+    return v;
+  }
+  const auto c = occ.conceptValue("RESULTAT");
+  const auto result = conceptData<Result>(c);
+  STELLA_ASSERT(result != nullptr, "RESULTAT holds no result");
+  const ResultStep* step = nullptr;
+  if (occ.has("NUME_ORDRE")) {
+    step = result->stepNumber(static_cast<int>(occ.integer("NUME_ORDRE")));
+  } else if (occ.has("INST")) {
+    step = result->stepAtTime(occ.real("INST"), occ.realOr("PRECISION", 1e-6));
+  } else if (!result->steps.empty()) {
+    step = &result->steps.back();
+  }
+  if (step == nullptr) {
+    fail("DEFI_GROUP_9", "the result " + c->name + " has no such step", occ.location());
+  }
+  const std::string name = occ.textOr("NOM_CHAM", "DEPL");
+  const Field* f = step->field(name);
+  if (f == nullptr || f->support() != FieldSupport::Node) {
+    fail("DEFI_GROUP_9",
+         fmt::format("the result {} has no nodal field {} at NUME_ORDRE {}", c->name, name, step->number),
+         occ.location());
+  }
+  const auto k = f->componentIndex(cmp);
+  if (!k) {
+    std::string known;
+    for (const auto& x : f->components()) {
+      known += (known.empty() ? "" : ", ") + x;
+    }
+    fail("DEFI_GROUP_9", "the field " + name + " has no component " + cmp, occ.locationOf("NOM_CMP"),
+         "components: " + known);
+  }
+  for (std::size_t n = 0; n < v.size() && n < f->entityCount(); ++n) {
+    if (!f->partial() || f->defined(n, *k)) {
+      v[n] = f->value(n, *k);
+    }
+  }
+  return v;
+}
+
+// TUNNEL: the nodes of the cells (TOUT, GROUP_MA) within RAYON of the axis GROUP_MA_AXE (a chain of
+// segments walked from GROUP_NO_ORIG), over the first LONGUEUR of the axis (all of it by
+// default). A node is inside when its projection on some axis segment falls within the segment
+// (before the LONGUEUR cut) and its distance to the segment's line is at most RAYON, or when it is
+// within RAYON of an inner vertex of the axis on the outer side of the bend (so that bends leave
+// no gap).
+std::vector<NodeId> tunnelNodes(const Mesh& m, const KeywordTree& occ) {
+  if (!occ.has("GROUP_MA_AXE") || !occ.has("GROUP_NO_ORIG")) {
+    fail("DEFI_GROUP_3", "OPTION='TUNNEL' needs GROUP_MA_AXE and GROUP_NO_ORIG", occ.location());
+  }
+  if (occ.has("MAILLE")) {
+    fail("DEFI_GROUP_4", "TUNNEL with MAILLE is not implemented yet: give GROUP_MA or TOUT",
+         occ.locationOf("MAILLE"));
+  }
+  const auto origin = nodeGroup(m, occ.text("GROUP_NO_ORIG"), occ.locationOf("GROUP_NO_ORIG"));
+  if (origin.size() != 1) {
+    fail("DEFI_GROUP_3", "GROUP_NO_ORIG must hold exactly one node", occ.locationOf("GROUP_NO_ORIG"));
+  }
+  const auto axis =
+      orderedChainNodes(m, unionOf(cellGroups(m, occ, "GROUP_MA_AXE")), origin.front(), std::nullopt);
+  // The axis polyline cut at LONGUEUR.
+  std::vector<Point3> line{m.point(axis.front())};
+  double remaining = occ.has("LONGUEUR") ? occ.real("LONGUEUR") : std::numeric_limits<double>::infinity();
+  for (std::size_t i = 1; i < axis.size() && remaining > 0.0; ++i) {
+    const Point3 a = line.back();
+    const Point3 b = m.point(axis[i]);
+    const double length = norm(b - a);
+    if (length <= remaining) {
+      line.push_back(b);
+      remaining -= length;
+    } else {
+      line.push_back(a + (remaining / length) * (b - a));
+      remaining = 0.0;
+    }
+  }
+  const double r = occ.real("RAYON");
+  // Parameter of the projection of x on segment i (0 at its start, 1 at its end).
+  const auto along = [&](const Point3& x, std::size_t i) {
+    const Point3 d = line[i + 1] - line[i];
+    const double l2 = dot(d, d);
+    return l2 > 0.0 ? dot(x - line[i], d) / l2 : -1.0;
+  };
+  const auto inside = [&](const Point3& x) {
+    for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+      const double s = along(x, i);
+      if (s >= 0.0 && s <= 1.0 && norm(x - (line[i] + s * (line[i + 1] - line[i]))) <= r) {
+        return true;
+      }
+      // The wedge outside a bend at inner vertex i: past the previous segment, before this one.
+      if (i > 0 && norm(x - line[i]) <= r && along(x, i - 1) > 1.0 && s < 0.0) {
+        return true;
+      }
+    }
+    return false;
+  };
+  const auto cells = occ.has("TOUT") ? allCells(m) : unionOf(cellGroups(m, occ, "GROUP_MA"));
+  std::vector<NodeId> out;
+  for (const NodeId n : nodesOfCells(m, cells, "TOUS")) {
+    if (inside(m.point(n))) {
+      out.push_back(n);
+    }
+  }
+  return out;
 }
 
 void creaGroupNo(Mesh& m, const KeywordTree& occ, std::vector<std::string>& made) {
@@ -280,6 +416,18 @@ void creaGroupNo(Mesh& m, const KeywordTree& occ, std::vector<std::string>& made
     setGroup(name,
              nodesOnSegment(m, candidates, a.front(), b.front(), precision, occ.text("CRITERE") == "RELATIF"),
              true);
+  } else if (option == "INTERVALLE_VALE") {
+    const auto bounds = occ.reals("VALE");
+    const auto values = nodalValues(m, occ);
+    std::vector<NodeId> nodes;
+    for (std::size_t n = 0; n < values.size(); ++n) {
+      if (values[n] && *values[n] >= bounds[0] && *values[n] <= bounds[1]) {
+        nodes.push_back(static_cast<NodeId>(n));
+      }
+    }
+    setGroup(name, nodes, false);
+  } else if (option == "TUNNEL") {
+    setGroup(name, tunnelNodes(m, occ), false);
   } else {
     fail("DEFI_GROUP_4", "CREA_GROUP_NO OPTION='" + option + "' is not implemented yet",
          occ.locationOf("OPTION"));

@@ -2,7 +2,7 @@
 // meshio (DEPL, SIEF_ELGA, step times) and h5py (MED's raw layout: NUME_ORDRE, INST, Gauss-point
 // values), each compared with the closed form of the problem AND with the values stella printed
 // through IMPR_RESU FORMAT='RESULTAT' in the .resu file; the same result as VTU/PVD read by
-// meshio.
+// meshio. Then DEFI_GROUP INTERVALLE_VALE on the result's DX.
 //
 // Problem: a 2 x 1 x 1 bar of two HEXA8, VMIS_ISOT_LINE (E = 200000, NU = 0.3, SY = 200,
 // D_SIGM_EPSI = 20000), symmetry planes x = 0, y = 0, z = 0, the end x = 2 pulled so that
@@ -55,6 +55,8 @@ RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, EXCIT=(_F(CHARGE=BC), _F(CHARGE=P
 IMPR_RESU(FORMAT='MED', UNITE=80, RESU=_F(RESULTAT=RESU, NOM_CHAM=('DEPL', 'SIEF_ELGA')))
 IMPR_RESU(FORMAT='RESULTAT', RESU=_F(RESULTAT=RESU, NOM_CHAM=('DEPL', 'SIEF_ELGA')))
 IMPR_RESU(FORMAT='VTU', RESU=_F(RESULTAT=RESU, NOM_CHAM=('DEPL', 'SIEF_ELGA')))
+M = DEFI_GROUP(reuse=M, MAILLAGE=M, CREA_GROUP_NO=_F(NOM='FAR', OPTION='INTERVALLE_VALE', RESULTAT=RESU,
+               INST=2.0, NOM_CMP='DX', VALE=(2.9e-3, 1.0)))
 FIN()
 )py";
 
@@ -180,6 +182,8 @@ TEST(ImprResuNonlinear, MedOfStatNonLineReadByMeshioAndH5py) {
       testing::runPython(dir, barCheck, (dir / "bar.rmed").string() + " " + (dir / "bar.resu").string()), 0);
   // FORMAT='VTU' (catalogue extension, default unit 81).
   EXPECT_EQ(testing::runPython(dir, vtuCheck, (dir / "bar.work" / "fort.81").string()), 0);
+  // INTERVALLE_VALE: DX = 3e-3 x at t = 2, so DX in [2.9e-3, 1] keeps the 8 nodes at x = 1, 2.
+  EXPECT_NE(r.message.find("group of nodes FAR (8 nodes)"), std::string::npos) << r.message;
 }
 
 } // namespace

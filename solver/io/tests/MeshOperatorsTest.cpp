@@ -1,6 +1,8 @@
 // The mesh commands from command files, run by the batch runner: LIRE_MAILLAGE in the three
 // formats with VERI_MAIL alarms, DEFI_GROUP, MODI_MAILLAGE, CREA_MAILLAGE, MACR_INFO_MAIL and
-// IMPR_RESU of a mesh, checked through the message file and the files written.
+// IMPR_RESU of a mesh, checked through the message file and the files written; the DEFI_GROUP
+// options NOEUD_CENTRE, INTERVALLE_VALE (coordinates) and TUNNEL; refusals of what is not
+// implemented.
 
 #include "solver/io/MeshIO.hpp"
 #include "solver/io/tests/CommRun.hpp"
@@ -118,6 +120,59 @@ TEST(MeshOperators, ModiCreaInfoAndImpr) {
   const Mesh out = readMedMesh(dir / "modi.rmed"); // unit 80 comes back beside the command file
   EXPECT_EQ(out.nodeCount(), 21);
   EXPECT_DOUBLE_EQ(out.point(0)[0], 1.0);
+}
+
+TEST(MeshOperators, DefiGroupCentreIntervalAndTunnel) {
+  const auto dir = testing::tempDir("defi_group_more");
+  // A 4 x 4 x 4 box of unit cubes with an axis of 4 SEG2 along x at y = z = 2 (group AXE) and its
+  // first node (0, 2, 2) in ORIG.
+  Mesh m = buildStructuredMesh({CellType::HEXA8, {4, 4, 4}, {4, 4, 4}, {0, 0, 0}});
+  const auto at = [&](double x) {
+    return nodesWhere(m, [&](const Point3& p) { return p[0] == x && p[1] == 2.0 && p[2] == 2.0; }).front();
+  };
+  std::vector<CellId> axis;
+  for (int i = 0; i < 4; ++i) {
+    axis.push_back(m.addCell(CellType::SEG2, std::vector<NodeId>{at(i), at(i + 1)}));
+  }
+  m.setCellGroup("AXE", axis);
+  m.setNodeGroup("ORIG", {at(0)});
+  writeMedMesh(dir / "m.med", m, "M");
+  const CommRun r = runComm(
+      dir, "dg2",
+      "DEBUT()\n"
+      "MA = LIRE_MAILLAGE(UNITE=20)\n"
+      "MA = DEFI_GROUP(reuse=MA, MAILLAGE=MA,\n"
+      "    CREA_GROUP_MA=(_F(NOM='BALL', OPTION='SPHERE', NOEUD_CENTRE='N1', RAYON=0.1, TYPE_MAILLE='3D'),\n"
+      "                   _F(NOM='TUBE', OPTION='CYLINDRE', NOEUD_CENTRE='N1', VECT_NORMALE=(0., 0., 1.),\n"
+      "                      RAYON=1.5, CRIT_NOEUD='TOUS', TYPE_MAILLE='3D')),\n"
+      "    CREA_GROUP_NO=(_F(NOM='SHELL', OPTION='ENV_SPHERE', NOEUD_CENTRE='N1', RAYON=1.0, "
+      "PRECISION=1e-6),\n"
+      "                   _F(NOM='SLAB', OPTION='INTERVALLE_VALE', NOM_CMP='X', VALE=(0.5, 2.0)),\n"
+      "                   _F(NOM='TUN', OPTION='TUNNEL', GROUP_MA='VOLUME', GROUP_MA_AXE='AXE',\n"
+      "                      GROUP_NO_ORIG='ORIG', RAYON=1.01, LONGUEUR=2.5),\n"
+      "                   _F(NOM='TUNALL', OPTION='TUNNEL', TOUT='OUI', GROUP_MA_AXE='AXE',\n"
+      "                      GROUP_NO_ORIG='ORIG', RAYON=1.01)))\n"
+      "FIN()\n",
+      {{20, dir / "m.med"}});
+  EXPECT_EQ(r.diagnostic, JobDiagnostic::Ok) << r.message;
+  // BALL: the corner cube; TUBE: the 4 columns of cubes whose nodes all lie within 1.5 of the z
+  // axis (x, y in [0, 1]); SHELL: (1,0,0), (0,1,0), (0,0,1); SLAB: x in {1, 2}, 2 x 25 nodes;
+  // TUN: x in {0, 1, 2} (the cut at 2.5), 5 nodes per plane within 1.01 of (y, z) = (2, 2);
+  // TUNALL: the 5 planes.
+  for (const char* line : {"group of cells BALL (1 cells)", "group of cells TUBE (4 cells)",
+                           "group of nodes SHELL (3 nodes)", "group of nodes SLAB (50 nodes)",
+                           "group of nodes TUN (15 nodes)", "group of nodes TUNALL (25 nodes)"}) {
+    EXPECT_NE(r.message.find(line), std::string::npos) << line << "\n" << r.message;
+  }
+  const CommRun bad =
+      runComm(dir, "dg2_bad",
+              "DEBUT()\nMA = LIRE_MAILLAGE(UNITE=20)\n"
+              "MA = DEFI_GROUP(reuse=MA, MAILLAGE=MA, CREA_GROUP_NO=_F(NOM='I', OPTION='INCLUSION',\n"
+              "    CAS_FIGURE='3D', GROUP_MA='VOLUME', GROUP_MA_INCL='AXE'))\n"
+              "FIN()\n",
+              {{20, dir / "m.med"}});
+  EXPECT_NE(bad.message.find("DEFI_GROUP_4"), std::string::npos) << bad.message;
+  EXPECT_NE(bad.message.find("OPTION='INCLUSION' is not implemented yet"), std::string::npos) << bad.message;
 }
 
 } // namespace
