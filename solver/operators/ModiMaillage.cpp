@@ -1,8 +1,11 @@
 // MODI_MAILLAGE: modifies a mesh in place (reuse=MA): ORIE_PEAU (and the 2020 spellings
-// ORIE_PEAU_2D/ORIE_PEAU_3D, mapped by the catalogue) orients skin cells outward, then
-// TRANSLATION, ROTATION, ECHELLE and SYMETRIE move the nodes. Other operations are refused as not
-// implemented yet.
+// ORIE_PEAU_2D/ORIE_PEAU_3D, mapped by the catalogue) orients skin cells outward, ORIE_NORM_COQUE
+// and ORIE_LIGNE orient shells and lines consistently (along VECT_NORM / VECT_TANG at GROUP_NO),
+// DEFORME moves the nodes by the DEPL field of a result's step, then TRANSLATION, ROTATION,
+// ECHELLE and SYMETRIE move the nodes. Other operations are refused as not implemented yet.
 
+#include "solver/database/Result.hpp"
+#include "solver/mesh/CellOrientation.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 #include "solver/mesh/MeshTransform.hpp"
 #include "solver/operators/MeshOperatorUtil.hpp"
@@ -18,12 +21,108 @@ Point3 point(const std::vector<double>& v) {
   return {v.empty() ? 0.0 : v[0], v.size() < 2 ? 0.0 : v[1], v.size() < 3 ? 0.0 : v[2]};
 }
 
+// The single node of GROUP_NO (ORIE_NORM_COQUE, ORIE_LIGNE), if given.
+std::optional<NodeId> singleNode(const Mesh& mesh, const KeywordTree& occ) {
+  if (!occ.has("GROUP_NO")) {
+    return std::nullopt;
+  }
+  const auto nodes = nodesOfGroups(mesh, occ, "GROUP_NO");
+  if (nodes.size() != 1) {
+    throw UserError(Diagnostic::fatal("MODI_MAILLAGE_2",
+                                      "GROUP_NO must hold exactly one node, '" + occ.text("GROUP_NO") +
+                                          "' holds " + std::to_string(nodes.size()),
+                                      occ.locationOf("GROUP_NO")));
+  }
+  return nodes.front();
+}
+
+// ORIE_NORM_COQUE (shells) or ORIE_LIGNE (lines), one occurrence.
+void orientOccurrence(OperatorCall& call, Mesh& mesh, const KeywordTree& occ, bool shells) {
+  const char* vectorKey = shells ? "VECT_NORM" : "VECT_TANG";
+  const auto cells = cellsOfGroups(mesh, occ, "GROUP_MA");
+  std::optional<Point3> direction;
+  if (occ.has(vectorKey)) {
+    direction = point(occ.reals(vectorKey));
+  }
+  try {
+    const auto node = singleNode(mesh, occ);
+    const auto r =
+        shells ? orientShells(mesh, cells, direction, node) : orientLines(mesh, cells, direction, node);
+    call.session.message() << fmt::format("   {}: {} of {} cells reversed ({} connected set{})\n",
+                                          shells ? "ORIE_NORM_COQUE" : "ORIE_LIGNE", r.reversed, cells.size(),
+                                          r.components, r.components > 1 ? "s" : "");
+  } catch (const UserError& e) {
+    Diagnostic d = e.first();
+    if (!d.location.known()) {
+      d.location = occ.location();
+    }
+    throw UserError(d);
+  }
+}
+
+// DEFORME: the DEPL field of a result's step (NUME_ORDRE, INST, default the last) moves the nodes.
+void deform(OperatorCall& call, Mesh& mesh, const KeywordTree& occ) {
+  if (occ.has("DEPL") || occ.has("ALEA")) {
+    const char* key = occ.has("DEPL") ? "DEPL" : "ALEA";
+    throw UserError(
+        Diagnostic::fatal("MODI_MAILLAGE_1",
+                          std::string("MODI_MAILLAGE/DEFORME/") + key + " is not implemented yet",
+                          occ.locationOf(key))
+            .withNote("give RESULTAT= (and NUME_ORDRE or INST) to move the nodes by a result's DEPL"));
+  }
+  const auto c = occ.conceptValue("RESULTAT");
+  const auto result = conceptData<Result>(c);
+  STELLA_ASSERT(result != nullptr, "RESULTAT holds no result");
+  const ResultStep* step = nullptr;
+  if (occ.has("NUME_ORDRE")) {
+    step = result->stepNumber(static_cast<int>(occ.integer("NUME_ORDRE")));
+  } else if (occ.has("INST")) {
+    step = result->stepAtTime(occ.real("INST"), occ.realOr("PRECISION", 1e-6));
+  } else if (!result->steps.empty()) {
+    step = &result->steps.back();
+  }
+  if (step == nullptr) {
+    throw UserError(
+        Diagnostic::fatal("MODI_MAILLAGE_3", "the result " + c->name + " has no such step", occ.location()));
+  }
+  const std::string name = occ.textOr("NOM_CHAM", "DEPL");
+  const Field* f = step->field(name);
+  if (f == nullptr || f->support() != FieldSupport::Node) {
+    throw UserError(Diagnostic::fatal(
+        "MODI_MAILLAGE_3",
+        fmt::format("the result {} has no nodal field {} at NUME_ORDRE {}", c->name, name, step->number),
+        occ.location()));
+  }
+  if (result->mesh.get() != &mesh &&
+      (result->mesh == nullptr || result->mesh->nodeCount() != mesh.nodeCount())) {
+    throw UserError(Diagnostic::fatal(
+        "MODI_MAILLAGE_4", "the result " + c->name + " is not defined on this mesh (node counts differ)",
+        occ.location()));
+  }
+  const char* axes[3] = {"DX", "DY", "DZ"};
+  int moved = 0;
+  for (NodeId n = 0; n < mesh.nodeCount() && static_cast<std::size_t>(n) < f->entityCount(); ++n) {
+    Point3 x = mesh.point(n);
+    bool any = false;
+    for (int d = 0; d < 3; ++d) {
+      const auto k = f->componentIndex(axes[d]);
+      if (k && (!f->partial() || f->defined(static_cast<std::size_t>(n), *k))) {
+        x[static_cast<std::size_t>(d)] += f->value(static_cast<std::size_t>(n), *k);
+        any = true;
+      }
+    }
+    mesh.setPoint(n, x);
+    moved += any ? 1 : 0;
+  }
+  call.session.message() << fmt::format("   DEFORME: {} nodes moved by {} of {} at NUME_ORDRE {} (INST {})\n",
+                                        moved, name, c->name, step->number, step->time);
+}
+
 Value runModiMaillage(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
   auto data = meshConceptOf(kw);
   Mesh& mesh = *data->mesh;
-  for (const char* unsupported : {"ORIE_FISSURE", "DEFORME", "ORIE_NORM_COQUE", "ORIE_LIGNE", "MODI_MAILLE",
-                                  "MODI_BASE", "ABSC_CURV"}) {
+  for (const char* unsupported : {"ORIE_FISSURE", "MODI_MAILLE", "MODI_BASE", "ABSC_CURV"}) {
     if (kw.has(unsupported)) {
       throw UserError(Diagnostic::fatal(
           "MODI_MAILLAGE_1", std::string("MODI_MAILLAGE/") + unsupported + " is not implemented yet",
@@ -43,6 +142,15 @@ Value runModiMaillage(OperatorCall& call) {
       d.location = occ.location();
       throw UserError(d);
     }
+  }
+  for (const auto& occ : kw.occurrences("ORIE_NORM_COQUE")) {
+    orientOccurrence(call, mesh, occ, true);
+  }
+  for (const auto& occ : kw.occurrences("ORIE_LIGNE")) {
+    orientOccurrence(call, mesh, occ, false);
+  }
+  for (const auto& occ : kw.occurrences("DEFORME")) {
+    deform(call, mesh, occ);
   }
   if (kw.has("TRANSLATION")) {
     translateMesh(mesh, point(kw.reals("TRANSLATION")));

@@ -2,7 +2,8 @@
 // meshio (DEPL, SIEF_ELGA, step times) and h5py (MED's raw layout: NUME_ORDRE, INST, Gauss-point
 // values), each compared with the closed form of the problem AND with the values stella printed
 // through IMPR_RESU FORMAT='RESULTAT' in the .resu file; the same result as VTU/PVD read by
-// meshio. Then DEFI_GROUP INTERVALLE_VALE on the result's DX.
+// meshio. Then DEFI_GROUP INTERVALLE_VALE on the result's DX and MODI_MAILLAGE DEFORME by its
+// DEPL, checked against the closed form.
 //
 // Problem: a 2 x 1 x 1 bar of two HEXA8, VMIS_ISOT_LINE (E = 200000, NU = 0.3, SY = 200,
 // D_SIGM_EPSI = 20000), symmetry planes x = 0, y = 0, z = 0, the end x = 2 pulled so that
@@ -57,6 +58,8 @@ IMPR_RESU(FORMAT='RESULTAT', RESU=_F(RESULTAT=RESU, NOM_CHAM=('DEPL', 'SIEF_ELGA
 IMPR_RESU(FORMAT='VTU', RESU=_F(RESULTAT=RESU, NOM_CHAM=('DEPL', 'SIEF_ELGA')))
 M = DEFI_GROUP(reuse=M, MAILLAGE=M, CREA_GROUP_NO=_F(NOM='FAR', OPTION='INTERVALLE_VALE', RESULTAT=RESU,
                INST=2.0, NOM_CMP='DX', VALE=(2.9e-3, 1.0)))
+M = MODI_MAILLAGE(reuse=M, MAILLAGE=M, DEFORME=_F(OPTION='TRAN', RESULTAT=RESU, INST=3.0))
+IMPR_RESU(FORMAT='MED', UNITE=82, RESU=_F(MAILLAGE=M))
 FIN()
 )py";
 
@@ -184,6 +187,21 @@ TEST(ImprResuNonlinear, MedOfStatNonLineReadByMeshioAndH5py) {
   EXPECT_EQ(testing::runPython(dir, vtuCheck, (dir / "bar.work" / "fort.81").string()), 0);
   // INTERVALLE_VALE: DX = 3e-3 x at t = 2, so DX in [2.9e-3, 1] keeps the 8 nodes at x = 1, 2.
   EXPECT_NE(r.message.find("group of nodes FAR (8 nodes)"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("DEFORME: 12 nodes moved by DEPL of RESU at NUME_ORDRE 6"), std::string::npos)
+      << r.message;
+  // DEFORME at t = 3 (eps = 2e-3, sigma = 40, eps_p = 1.8e-3): x (1 + eps), y and z (1 + lateral).
+  const Mesh before = readMedMesh(dir / "bar.med");
+  const Mesh after = readMedMesh(dir / "bar.work" / "fort.82");
+  ASSERT_EQ(after.nodeCount(), before.nodeCount());
+  const double eps = 2e-3;
+  const double lateral = -0.3 * 40.0 / 2e5 - (eps - 40.0 / 2e5) / 2;
+  for (NodeId n = 0; n < before.nodeCount(); ++n) {
+    const Point3 x = before.point(n);
+    const Point3 y = after.point(n);
+    EXPECT_NEAR(y[0], x[0] * (1 + eps), 1e-12) << n;
+    EXPECT_NEAR(y[1], x[1] * (1 + lateral), 1e-12) << n;
+    EXPECT_NEAR(y[2], x[2] * (1 + lateral), 1e-12) << n;
+  }
 }
 
 } // namespace

@@ -1,8 +1,8 @@
 // The mesh commands from command files, run by the batch runner: LIRE_MAILLAGE in the three
 // formats with VERI_MAIL alarms, DEFI_GROUP, MODI_MAILLAGE, CREA_MAILLAGE, MACR_INFO_MAIL and
 // IMPR_RESU of a mesh, checked through the message file and the files written; the DEFI_GROUP
-// options NOEUD_CENTRE, INTERVALLE_VALE (coordinates) and TUNNEL; refusals of what is not
-// implemented.
+// options NOEUD_CENTRE, INTERVALLE_VALE (coordinates) and TUNNEL; MODI_MAILLAGE ORIE_NORM_COQUE
+// and ORIE_LIGNE; refusals of what is not implemented.
 
 #include "solver/io/MeshIO.hpp"
 #include "solver/io/tests/CommRun.hpp"
@@ -173,6 +173,54 @@ TEST(MeshOperators, DefiGroupCentreIntervalAndTunnel) {
               {{20, dir / "m.med"}});
   EXPECT_NE(bad.message.find("DEFI_GROUP_4"), std::string::npos) << bad.message;
   EXPECT_NE(bad.message.find("OPTION='INCLUSION' is not implemented yet"), std::string::npos) << bad.message;
+}
+
+TEST(MeshOperators, ModiMaillageShellAndLineOrientation) {
+  const auto dir = testing::tempDir("modi_orie");
+  Mesh box = buildStructuredMesh({CellType::HEXA8, {2, 2, 2}, {1, 1, 1}, {0, 0, 0}});
+  reverseCell(box, box.cellGroup("ZMAX")->back());
+  writeMedMesh(dir / "box.med", box, "BOX");
+  Mesh plate = buildStructuredMesh({CellType::QUAD4, {2, 2, 1}, {2, 2, 1}, {0, 0, 0}});
+  reverseCell(plate, plate.cellGroup("XMIN")->front());
+  writeMedMesh(dir / "plate.med", plate, "PLATE");
+  const CommRun r = runComm(
+      dir, "orie",
+      "DEBUT()\n"
+      "MB = LIRE_MAILLAGE(UNITE=20)\n"
+      "MB = DEFI_GROUP(reuse=MB, MAILLAGE=MB, CREA_GROUP_NO=_F(NOM='TOP', NOEUD='N27'))\n"
+      "MB = MODI_MAILLAGE(reuse=MB, MAILLAGE=MB,\n"
+      "                   ORIE_NORM_COQUE=_F(GROUP_MA='ZMAX', VECT_NORM=(0., 0., -1.), GROUP_NO='TOP'))\n"
+      "MP = LIRE_MAILLAGE(UNITE=21)\n"
+      "MP = MODI_MAILLAGE(reuse=MP, MAILLAGE=MP,\n"
+      "                   ORIE_LIGNE=_F(GROUP_MA=('XMIN', 'YMIN'), VECT_TANG=(1., 0.), GROUP_NO='ORIGIN'))\n"
+      "MP = MODI_MAILLAGE(reuse=MP, MAILLAGE=MP,\n"
+      "                   ORIE_LIGNE=_F(GROUP_MA=('XMIN', 'YMIN'), VECT_TANG=(-1., 0.), GROUP_NO='ORIGIN'))\n"
+      "IMPR_RESU(FORMAT='MED', UNITE=80, RESU=_F(MAILLAGE=MB))\n"
+      "FIN()\n",
+      {{20, dir / "box.med"}, {21, dir / "plate.med"}});
+  EXPECT_EQ(r.diagnostic, JobDiagnostic::Ok) << r.message;
+  // ZMAX: 3 faces pointed up, one (reversed above) down: turning them all down reverses 3.
+  // The L line XMIN + YMIN (4 SEG2, one of XMIN reversed above): along +x at the origin, the
+  // skin's own direction (down XMIN, along YMIN) but for the reversed one; then VECT_TANG (-1, 0)
+  // at the origin turns the whole line over.
+  EXPECT_NE(r.message.find("ORIE_NORM_COQUE: 3 of 4 cells reversed (1 connected set)"), std::string::npos)
+      << r.message;
+  EXPECT_NE(r.message.find("ORIE_LIGNE: 1 of 4 cells reversed (1 connected set)"), std::string::npos)
+      << r.message;
+  EXPECT_NE(r.message.find("ORIE_LIGNE: 4 of 4 cells reversed (1 connected set)"), std::string::npos)
+      << r.message;
+  const Mesh out = readMedMesh(dir / "orie.rmed");
+  for (const CellId c : *out.cellGroup("ZMAX")) {
+    EXPECT_NEAR(cellNormal(out, c)[2], -0.25, 1e-14); // quarter faces, all facing down
+  }
+  const CommRun bad =
+      runComm(dir, "orie_bad",
+              "DEBUT()\nMP = LIRE_MAILLAGE(UNITE=21)\n"
+              "MP = MODI_MAILLAGE(reuse=MP, MAILLAGE=MP, DEFORME=_F(OPTION='TRAN', ALEA=0.1))\n"
+              "FIN()\n",
+              {{21, dir / "plate.med"}});
+  EXPECT_NE(bad.message.find("MODI_MAILLAGE/DEFORME/ALEA is not implemented yet"), std::string::npos)
+      << bad.message;
 }
 
 } // namespace
