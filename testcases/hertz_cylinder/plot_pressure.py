@@ -38,6 +38,8 @@ def read_cont_noeu(path):
         parts = line.split()
         if len(parts) != len(names) + 1:
             break
+        if all(v == "-" for v in parts[1:]):
+            continue  # a node outside the partial field
         rows[parts[0]] = {n: (float(v) if v != "-" else 0.0) for n, v in zip(names, parts[1:])}
     return rows
 

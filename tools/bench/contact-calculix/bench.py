@@ -211,6 +211,9 @@ CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='DISCRETE',{GLOBAL} ZONE=_F(GROUP_MA_
 RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, CONTACT=CONT, EXCIT=_F(CHARGE=CL, FONC_MULT=RAMPE),
                      INCREMENT=_F(LIST_INST=L_INST))"""
 BLOCK_LINEAR = "RESU = MECA_STATIQUE(MODELE=MO, CHAM_MATER=CM, EXCIT=_F(CHARGE=CL))"
+BLOCK_SNL = """RAMPE = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0))
+L_INST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, NOMBRE=1))
+RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, EXCIT=_F(CHARGE=CL, FONC_MULT=RAMPE), INCREMENT=_F(LIST_INST=L_INST))"""
 
 
 def stella_run(stella, d, comm, msh):
@@ -221,6 +224,18 @@ def stella_run(stella, d, comm, msh):
     rc, wall, cpu = run([stella, "run", "case.export", "--quiet", "--work-dir", str(d / "work"),
                          "--output-dir", str(d)], d, d / "stella.log")
     return rc, wall, cpu
+
+
+def command_times(mess, names=("STAT_NON_LINE", "MECA_STATIQUE")):
+    """(cpu, elapsed) seconds of the first command among `names` in a message file."""
+    current = None
+    for line in Path(mess).read_text().splitlines():
+        words = line.split()
+        if line.lstrip().startswith("# Command #") and len(words) > 3:
+            current = words[3]
+        elif line.lstrip().startswith("# End of command") and current in names:
+            return float(words[words.index("cpu:") + 1]), float(words[words.index("elapsed:") + 1])
+    return None, None
 
 
 def read_resu_block(path, field):
@@ -236,6 +251,8 @@ def read_resu_block(path, field):
         parts = line.split()
         if len(parts) != len(names) + 1:
             break
+        if all(v == "-" for v in parts[1:]):
+            continue  # a node outside the partial field
         rows[parts[0]] = {n: (float(v) if v != "-" else 0.0) for n, v in zip(names, parts[1:])}
     return rows
 
@@ -264,22 +281,27 @@ def stella_hertz(work, stella):
     p = nodal_pressure(mesh.points, rows, slave, trib)
     force = sum(abs(rows[f"N{n + 1}"]["RNY"]) for n in slave)
     used = np.unique(np.concatenate([c.ravel() for _n, _t, c in mesh.volume_cells(["BLOC", "IND"])]))
-    return dict(rc=rc, wall=wall, cpu=cpu, equations=2 * len(used), nodes=len(used),
-                **hertz_errors(force, x, p))
+    solve_cpu, solve_wall = command_times(d / "case.mess")
+    return dict(rc=rc, wall=wall, cpu=cpu, equations=2 * len(used), nodes=len(used), solve_cpu=solve_cpu,
+                solve_wall=solve_wall, **hertz_errors(force, x, p))
 
 
-def stella_block(work, stella, nb=23, nh=24, merged=False, algo=""):
-    msh = block_mesh(work, nb, nh, merged)
+def stella_block(work, stella, nb=23, nh=24, merged=None, algo=""):
+    """merged: None (contact), 'linear' (bonded, MECA_STATIQUE) or 'snl' (bonded, STAT_NON_LINE)."""
+    msh = block_mesh(work, nb, nh, merged is not None)
     mesh = Mesh(msh)
-    solve = BLOCK_LINEAR if merged else BLOCK_CONTACT.format(ALGO=algo, GLOBAL=(" RESI_ABSO=1.0e-9," if algo else ""))
+    solve = {"linear": BLOCK_LINEAR, "snl": BLOCK_SNL}.get(merged) or BLOCK_CONTACT.format(
+        ALGO=algo, GLOBAL=(" RESI_ABSO=1.0e-9," if algo else ""))
     fields = "'DEPL'" if merged else "('DEPL', 'CONT_NOEU')"
-    tag = f"stella_block_{nb}_{nh}{'_merged' if merged else ''}{'_gcp' if algo else ''}"
+    tag = f"stella_block_{nb}_{nh}{'_' + merged if merged else ''}{'_gcp' if algo else ''}"
     d = work / tag
     rc, wall, cpu = stella_run(stella, d, BLOCK_COMM.format(E=E, NU=NU, MD=-D_BLOCK, SOLVE=solve, FIELDS=fields), msh)
     slave = mesh.group_nodes("HAUT_BAS")
     disp = read_resu_block(d / "case.resu", "DEPL")
     uz = np.array([disp[f"N{n + 1}"]["DZ"] for n in slave])
-    out = dict(rc=rc, wall=wall, cpu=cpu, equations=3 * len(mesh.points), dir=d)
+    solve_cpu, solve_wall = command_times(d / "case.mess")
+    out = dict(rc=rc, wall=wall, cpu=cpu, equations=3 * len(mesh.points), solve_cpu=solve_cpu,
+               solve_wall=solve_wall)
     if merged:
         out["u_err"] = float(np.max(np.abs(uz + D_BLOCK / 2))) / (D_BLOCK / 2)
         return out
@@ -342,7 +364,8 @@ def main():
             results["stella block3d GCP"] = stella_block(work, stella, algo=", ALGO_CONT='GCP'")
     if "overhead" in cases:
         results["stella block 24/24 contact"] = stella_block(work, stella, 24, 24)
-        results["stella block 24/24 bonded (MECA_STATIQUE)"] = stella_block(work, stella, 24, 24, merged=True)
+        results["stella block 24/24 bonded, MECA_STATIQUE"] = stella_block(work, stella, 24, 24, merged="linear")
+        results["stella block 24/24 bonded, STAT_NON_LINE"] = stella_block(work, stella, 24, 24, merged="snl")
     for name, r in results.items():
         print(name, {k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in r.items()})
 
