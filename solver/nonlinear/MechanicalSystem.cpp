@@ -25,10 +25,16 @@ void checkModel(const Model* loadModel, const Model& model, const SourceLocation
 MechanicalSystem::MechanicalSystem(std::shared_ptr<const Model> model,
                                    std::shared_ptr<const MaterialField> materials,
                                    std::vector<Excitation> excitations,
-                                   const std::vector<std::string>& relations, const SourceLocation& at)
-    : model_(std::move(model)), materials_(std::move(materials)), excitations_(std::move(excitations)),
-      dofs_(*model_), behaviours_(*model_, *materials_, relations, at),
-      assembler_(*model_, dofs_, behaviours_) {
+                                   const std::vector<std::string>& relations, const SourceLocation& at,
+                                   std::shared_ptr<const ElementCharacteristics> cara)
+    : model_(std::move(model)), materials_(std::move(materials)), cara_(std::move(cara)),
+      excitations_(std::move(excitations)), dofs_(*model_), behaviours_(*model_, *materials_, relations, at),
+      assembler_(*model_, dofs_, behaviours_, cara_.get()) {
+  if (cara_ && cara_->model.get() != model_.get()) {
+    throw UserError(Diagnostic::fatal("CARA_6", "CARA_ELEM was defined on another model than MODELE", at)
+                        .withNote("build it with AFFE_CARA_ELEM(MODELE= the model of the analysis, ...)"));
+  }
+  checkDiscreteElementsCovered(*model_, cara_.get(), at);
   std::vector<ConstraintRow> rows;
   std::vector<bool> eliminated(static_cast<std::size_t>(dofs_.physicalCount()), false);
   for (std::size_t e = 0; e < excitations_.size(); ++e) {

@@ -20,15 +20,18 @@ class MechanicalSystem {
 public:
   // `relations[c]`: RELATION of each cell (see CellBehaviours). Throws UserError LOAD_8 when an
   // excitation's load was built on another model, SOLVE_4 when one DOF is imposed twice by
-  // elimination with different multipliers.
+  // elimination with different multipliers. `cara` (CARA_ELEM, may be null) gives the stiffness
+  // of the discrete springs: CARA_5 when a discrete element of the model has none, CARA_6 when
+  // it was built on another model.
   MechanicalSystem(std::shared_ptr<const Model> model, std::shared_ptr<const MaterialField> materials,
                    std::vector<Excitation> excitations, const std::vector<std::string>& relations,
-                   const SourceLocation& at);
+                   const SourceLocation& at, std::shared_ptr<const ElementCharacteristics> cara = nullptr);
 
   const Model& model() const { return *model_; }
   const DofMap& dofs() const { return dofs_; }
   const CellBehaviours& behaviours() const { return behaviours_; }
   const VolumeAssembler& assembler() const { return assembler_; }
+  const ElementCharacteristics* characteristics() const { return cara_.get(); }
   SaddleSolver& solver() { return *solver_; }
   const SaddleSolver& solver() const { return *solver_; }
   const std::vector<Excitation>& excitations() const { return excitations_; }
@@ -47,6 +50,7 @@ public:
 private:
   std::shared_ptr<const Model> model_;
   std::shared_ptr<const MaterialField> materials_;
+  std::shared_ptr<const ElementCharacteristics> cara_;
   std::vector<Excitation> excitations_;
   DofMap dofs_;
   CellBehaviours behaviours_;

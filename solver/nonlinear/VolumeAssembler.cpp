@@ -22,8 +22,29 @@ Eigen::MatrixXd cellCoordinates(const Mesh& mesh, CellId c, int dim) {
   return x;
 }
 
-VolumeAssembler::VolumeAssembler(const Model& model, const DofMap& dofs, const CellBehaviours& behaviours)
-    : model_(model), dofs_(dofs), behaviours_(behaviours), cells_(model.cellsOfKind(ElementKind::Volume)) {}
+VolumeAssembler::VolumeAssembler(const Model& model, const DofMap& dofs, const CellBehaviours& behaviours,
+                                 const ElementCharacteristics* springs)
+    : model_(model), dofs_(dofs), behaviours_(behaviours), cells_(model.cellsOfKind(ElementKind::Volume)),
+      springs_(springs) {}
+
+void VolumeAssembler::addSprings(const Eigen::VectorXd& uStart, const Eigen::VectorXd& du,
+                                 AssemblyOutput out) const {
+  if (springs_ == nullptr) {
+    return;
+  }
+  for (const DiscreteSpring& s : springs_->springs) {
+    for (int c = 0; c < dofs_.components(); ++c) {
+      const double k = s.stiffness[static_cast<std::size_t>(c)];
+      const int eq = dofs_.dof(s.node, c);
+      if (out.matrix != nullptr) {
+        out.matrix->emplace_back(eq, eq, k);
+      }
+      if (out.internalForces != nullptr) {
+        (*out.internalForces)(eq) += k * (uStart(eq) + du(eq));
+      }
+    }
+  }
+}
 
 void VolumeAssembler::cellDofs(CellId c, std::vector<int>& dofs) const {
   dofs.clear();
@@ -54,7 +75,6 @@ Eigen::Map<const Eigen::VectorXd> row(const Field& f, std::size_t point) {
 AssemblyStatus VolumeAssembler::run(const Eigen::VectorXd& uStart, const Eigen::VectorXd& du,
                                     const PointState& start, behaviour::Option option,
                                     AssemblyOutput out) const {
-  (void)uStart;
   const Mesh& mesh = *model_.mesh;
   const int dim = dofs_.components();
   AssemblyStatus status;
@@ -131,6 +151,7 @@ AssemblyStatus VolumeAssembler::run(const Eigen::VectorXd& uStart, const Eigen::
       }
     }
   }
+  addSprings(uStart, du, out);
   return status;
 }
 

@@ -1,9 +1,11 @@
 #pragma once
 // The loop over the model's volume cells: kinematics, behaviour integration at every Gauss
 // point, element internal forces B^T sigma and tangents B^T D B, scattered into global vectors
-// and matrix triplets (physical DOFs only).
+// and matrix triplets (physical DOFs only); then the discrete springs (AFFE_CARA_ELEM K_T_D_N), whose
+// constant stiffness k adds k to the matrix and k (uStart + du) to the internal forces.
 
 #include "solver/behaviour/Behaviour.hpp"
+#include "solver/model/ElementCharacteristics.hpp"
 #include "solver/nonlinear/CellBehaviours.hpp"
 #include "solver/nonlinear/DofMap.hpp"
 #include "solver/nonlinear/PointState.hpp"
@@ -29,7 +31,9 @@ struct AssemblyStatus {
 
 class VolumeAssembler {
 public:
-  VolumeAssembler(const Model& model, const DofMap& dofs, const CellBehaviours& behaviours);
+  // `springs` (may be null): the characteristics of the model's discrete elements.
+  VolumeAssembler(const Model& model, const DofMap& dofs, const CellBehaviours& behaviours,
+                  const ElementCharacteristics* springs = nullptr);
 
   // Integrates over the step from displacement `uStart` with increment `du` (physical size) and
   // the state `start`. Throws UserError ELEM_1 naming a cell with a non-positive Jacobian.
@@ -40,10 +44,13 @@ public:
   void cellDofs(CellId c, std::vector<int>& dofs) const;
 
 private:
+  void addSprings(const Eigen::VectorXd& uStart, const Eigen::VectorXd& du, AssemblyOutput out) const;
+
   const Model& model_;
   const DofMap& dofs_;
   const CellBehaviours& behaviours_;
   std::vector<CellId> cells_;
+  const ElementCharacteristics* springs_;
 };
 
 // Coordinates of a cell's nodes as a (nodes x dim) matrix.

@@ -4,6 +4,7 @@
 #include "interpreter/Diagnostics.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/functions/InstantList.hpp"
+#include "solver/model/ElementCharacteristics.hpp"
 #include "solver/nonlinear/CommandInputs.hpp"
 #include "solver/nonlinear/ElasticSolve.hpp"
 #include "solver/nonlinear/ResultFields.hpp"
@@ -43,24 +44,21 @@ std::vector<double> instants(const KeywordTree& kw) {
 
 Value runMecaStatique(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
-  if (kw.has("CARA_ELEM")) {
-    throw UserError(Diagnostic::fatal("STAT_2", "MECA_STATIQUE CARA_ELEM is not implemented yet",
-                                      kw.locationOf("CARA_ELEM")));
-  }
   auto model = readModel(kw);
   auto materials = readMaterialField(kw, *model);
   auto excitations = readExcitations(kw);
   std::vector<std::string> relations(model->cells.size(), "ELAS");
-  MechanicalSystem system(model, materials, excitations, relations, call.location);
+  auto cara = readCaraElem(kw);
+  MechanicalSystem system(model, materials, excitations, relations, call.location, cara);
   system.solver().setOptions(readSolverOptions(kw));
   const bool withStress = kw.textOr("OPTION", "SIEF_ELGA") == "SIEF_ELGA";
   auto& msg = call.session.message();
   msg << fmt::format("   equations: {} ({} displacement DOFs, {} Lagrange multipliers)\n",
                      system.dofs().size(), system.dofs().physicalCount(), system.dofs().lagrangeCount());
   msg << fmt::format(
-      "   effects: linear elasticity (no return mapping), {} load(s), one factorisation for every "
-      "instant\n",
-      excitations.size());
+      "   effects: linear elasticity (no return mapping), {} load(s), {} discrete spring(s), one "
+      "factorisation for every instant\n",
+      excitations.size(), cara ? cara->springs.size() : 0);
 
   std::shared_ptr<Result> result;
   if (call.reused) {
