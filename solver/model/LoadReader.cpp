@@ -3,6 +3,7 @@
 #include "solver/model/LoadReader.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/model/RigidRelations.hpp"
 #include "solver/model/Selection.hpp"
 
 #include <cmath>
@@ -128,6 +129,14 @@ void readLiaisonUnif(const Model& model, const KeywordTree& occ, MechanicalLoad&
   }
 }
 
+void readLiaisonSolide(const Model& model, const KeywordTree& occ, MechanicalLoad& load) {
+  const auto nodes = modelNodes(model, occ);
+  auto relations = rigidBodyRelations(*model.mesh, nodes, model.components, occ.realOr("DIST_MIN", 0.0));
+  for (auto& r : relations) {
+    load.relations.push_back(std::move(r));
+  }
+}
+
 void readForces(const Model& model, const KeywordTree& keywords, MechanicalLoad& load) {
   for (const KeywordTree& occ : keywords.occurrences("FORCE_NODALE")) {
     for (const char* m : {"MX", "MY", "MZ", "ANGL_NAUT"}) {
@@ -240,9 +249,8 @@ std::vector<NodeId> modelNodes(const Model& model, const KeywordTree& occ) {
 
 void readMechanicalLoad(const KeywordTree& keywords, MechanicalLoad& load) {
   const Model& model = *load.model;
-  for (const char* key :
-       {"ROTATION", "ARETE_IMPO", "LIAISON_OBLIQUE", "LIAISON_GROUP", "LIAISON_MAIL", "LIAISON_SOLIDE",
-        "FORCE_ARETE", "FORCE_POUTRE", "FORCE_COQUE", "PRE_SIGM", "PRE_EPSI"}) {
+  for (const char* key : {"ROTATION", "ARETE_IMPO", "LIAISON_OBLIQUE", "LIAISON_GROUP", "LIAISON_MAIL",
+                          "FORCE_ARETE", "FORCE_POUTRE", "FORCE_COQUE", "PRE_SIGM", "PRE_EPSI"}) {
     if (keywords.has(key)) {
       throw UserError(Diagnostic::fatal(
           "LOAD_4", fmt::format("AFFE_CHAR_MECA {} is not implemented yet", key), keywords.locationOf(key)));
@@ -259,6 +267,9 @@ void readMechanicalLoad(const KeywordTree& keywords, MechanicalLoad& load) {
   }
   for (const KeywordTree& occ : keywords.occurrences("LIAISON_UNIF")) {
     readLiaisonUnif(model, occ, load);
+  }
+  for (const KeywordTree& occ : keywords.occurrences("LIAISON_SOLIDE")) {
+    readLiaisonSolide(model, occ, load);
   }
   readForces(model, keywords, load);
 }
