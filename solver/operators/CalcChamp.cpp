@@ -1,63 +1,275 @@
-// CALC_CHAMP: fields computed from a result's stored fields. Implemented: FORCE FORC_NODA (the
-// nodal forces B^T sigma of SIEF_ELGA) and REAC_NODA (FORC_NODA minus the external forces of
-// the loads the result was computed with, so non-zero only where supports react). The other
-// options are refused as not implemented yet.
+// CALC_CHAMP: fields derived from the stored fields of a result, on the steps chosen by
+// TOUT_ORDRE (the default), NUME_ORDRE, INST or LIST_INST (CRITERE, PRECISION) and the cells of
+// GROUP_MA (default: every volume cell). Implemented options:
+//   CONTRAINTE   SIEF_ELNO, SIGM_ELNO (SIEF_ELGA extrapolated to the cell nodes), SIEF_NOEU,
+//                SIGM_NOEU (ELNO averaged at the nodes), SIGM_ELGA (= SIEF_ELGA for solids)
+//   DEFORMATION  EPSI_ELGA (from DEPL), EPSI_ELNO, EPSI_NOEU
+//   CRITERES     SIEQ_ELGA (from SIEF_ELGA), SIEQ_ELNO (from SIGM_ELNO), SIEQ_NOEU (SIEQ_ELNO averaged)
+//   VARI_INTERNE VARI_ELNO, VARI_NOEU (from VARI_ELGA)
+//   FORCE        FORC_NODA (B^T sigma of SIEF_ELGA), REAC_NODA (FORC_NODA minus the external
+//                forces of the loads the result was computed with)
+// Only the asked fields are stored; intermediate ones (SIGM_ELNO for SIEQ_NOEU...) are computed
+// in memory when needed and said so in the message file. Other options are refused by name as
+// not implemented yet. The methods are described in solver/post/DerivedFields.hpp.
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/database/Result.hpp"
+#include "solver/functions/RealFunction.hpp"
 #include "solver/model/MaterialField.hpp"
+#include "solver/model/Selection.hpp"
 #include "solver/nonlinear/ExternalForces.hpp"
 #include "solver/nonlinear/NodalForces.hpp"
 #include "solver/nonlinear/ResultFields.hpp"
 #include "solver/nonlinear/ResultLoads.hpp"
+#include "solver/post/DerivedFields.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 
 #include <cmath>
 #include <fmt/format.h>
+#include <map>
+#include <set>
 
 namespace stella {
 
 namespace {
 
-std::vector<ResultStep*> selectedSteps(Result& result, const KeywordTree& kw) {
-  std::vector<ResultStep*> out;
-  for (ResultStep& s : result.steps) {
-    bool take = true;
-    if (kw.has("NUME_ORDRE")) {
-      const auto n = kw.integers("NUME_ORDRE");
-      take = std::find(n.begin(), n.end(), s.number) != n.end();
-    } else if (kw.has("INST")) {
-      take = false;
-      for (double t : kw.reals("INST")) {
-        take = take || std::fabs(t - s.time) <= 1.0e-6 * std::max(1.0, std::fabs(t));
-      }
+// Option keyword -> the options of it that are implemented.
+const std::map<std::string, std::vector<std::string>>& implementedOptions() {
+  static const std::map<std::string, std::vector<std::string>> options{
+      {"CONTRAINTE", {"SIEF_ELNO", "SIGM_ELNO", "SIEF_NOEU", "SIGM_NOEU", "SIGM_ELGA", "SIEF_ELGA"}},
+      {"DEFORMATION", {"EPSI_ELGA", "EPSI_ELNO", "EPSI_NOEU"}},
+      {"CRITERES", {"SIEQ_ELGA", "SIEQ_ELNO", "SIEQ_NOEU"}},
+      {"VARI_INTERNE", {"VARI_ELNO", "VARI_NOEU"}},
+      {"FORCE", {"FORC_NODA", "REAC_NODA"}}};
+  return options;
+}
+
+std::string implementedList() {
+  std::vector<std::string> parts;
+  for (const auto& [keyword, names] : implementedOptions()) {
+    parts.push_back(fmt::format("{}=({})", keyword, fmt::join(names, ", ")));
+  }
+  return fmt::format("implemented: {}", fmt::join(parts, "; "));
+}
+
+// The requested options in keyword order; refuses the keywords and options not implemented.
+std::vector<std::string> requestedOptions(const KeywordTree& kw) {
+  for (const char* k : {"ENERGIE", "PROPRIETES", "HYDRAULIQUE", "CHAM_UTIL", "SOUS_POINT", "EXCIT",
+                        "NUME_MODE", "NOEUD_CMP", "NOM_CAS", "FREQ", "LIST_FREQ", "LIST_ORDRE"}) {
+    if (kw.has(k)) {
+      throw UserError(Diagnostic::fatal("CALC_2", fmt::format("CALC_CHAMP {} is not implemented yet", k),
+                                        kw.locationOf(k))
+                          .withNote(implementedList()));
     }
-    if (take) {
-      out.push_back(&s);
+  }
+  std::vector<std::string> out;
+  for (const char* keyword : {"CONTRAINTE", "DEFORMATION", "CRITERES", "VARI_INTERNE", "FORCE"}) {
+    if (!kw.has(keyword)) {
+      continue;
+    }
+    const auto& known = implementedOptions().at(keyword);
+    for (const auto& option : kw.texts(keyword)) {
+      if (std::find(known.begin(), known.end(), option) == known.end()) {
+        throw UserError(
+            Diagnostic::fatal("CALC_2",
+                              fmt::format("CALC_CHAMP {}='{}' is not implemented yet", keyword, option),
+                              kw.locationOf(keyword))
+                .withNote(implementedList()));
+      }
+      if (std::find(out.begin(), out.end(), option) == out.end()) {
+        out.push_back(option);
+      }
     }
   }
   if (out.empty()) {
-    throw UserError(Diagnostic::fatal("CALC_1", "no stored step matches NUME_ORDRE / INST", kw.location()));
+    throw UserError(Diagnostic::fatal("CALC_2", "CALC_CHAMP asks for no field", kw.location())
+                        .withNote(implementedList()));
   }
   return out;
 }
 
-void refuseOthers(const KeywordTree& kw) {
-  for (const char* k :
-       {"CONTRAINTE", "DEFORMATION", "ENERGIE", "CRITERES", "VARI_INTERNE", "HYDRAULIQUE", "ERREUR",
-        "METALLURGIE", "PROPRIETES", "CHAM_UTIL", "LIST_INST", "LIST_ORDRE", "EXCIT"}) {
-    if (kw.has(k)) {
-      throw UserError(Diagnostic::fatal("CALC_2", fmt::format("CALC_CHAMP {} is not implemented yet", k),
-                                        kw.locationOf(k))
-                          .withNote("implemented: FORCE=('FORC_NODA', 'REAC_NODA')"));
+std::string stepList(const Result& r) {
+  std::vector<std::string> items;
+  for (const auto& s : r.steps) {
+    items.push_back(fmt::format("{} (INST {})", s.number, s.time));
+  }
+  return listNames(items);
+}
+
+std::vector<ResultStep*> selectedSteps(Result& result, const std::string& name, const KeywordTree& kw) {
+  std::vector<ResultStep*> out;
+  if (kw.has("NUME_ORDRE")) {
+    for (auto n : kw.integers("NUME_ORDRE")) {
+      ResultStep* s = result.stepNumber(static_cast<int>(n));
+      if (s == nullptr) {
+        throw UserError(
+            Diagnostic::fatal("CALC_1", fmt::format("result {} has no NUME_ORDRE {}", name, n),
+                              kw.locationOf("NUME_ORDRE"))
+                .withNote(fmt::format("its stored steps (NUME_ORDRE, INST): {}", stepList(result))));
+      }
+      out.push_back(s);
+    }
+    return out;
+  }
+  if (kw.has("INST") || kw.has("LIST_INST")) {
+    const bool absolute = kw.textOr("CRITERE", "RELATIF") == "ABSOLU";
+    const double precision = kw.realOr("PRECISION", 1.0e-6);
+    std::vector<double> times;
+    if (kw.has("INST")) {
+      times = kw.reals("INST");
+    } else {
+      auto list = conceptData<RealList>(kw.conceptValue("LIST_INST"));
+      STELLA_ASSERT(list != nullptr, "LIST_INST holds no list of reals");
+      times = list->values;
+    }
+    const char* keyword = kw.has("INST") ? "INST" : "LIST_INST";
+    for (double t : times) {
+      const ResultStep* s = result.stepAtTime(t, precision, absolute);
+      if (s == nullptr) {
+        throw UserError(
+            Diagnostic::fatal("CALC_1", fmt::format("result {} has no step at INST {}", name, t),
+                              kw.locationOf(keyword))
+                .withNote(fmt::format("its stored steps (NUME_ORDRE, INST): {}", stepList(result))));
+      }
+      out.push_back(result.stepNumber(s->number));
+    }
+    return out;
+  }
+  for (ResultStep& s : result.steps) {
+    out.push_back(&s);
+  }
+  return out;
+}
+
+// ELGA field restricted to the selected cells (the others get no point).
+Field restrictToCells(const Field& elga, const std::vector<bool>& cells) {
+  std::vector<int> perCell(elga.cellCount(), 0);
+  for (std::size_t c = 0; c < perCell.size(); ++c) {
+    perCell[c] = c < cells.size() && cells[c] ? elga.pointCount(c) : 0;
+  }
+  Field out = Field::perPoint(FieldSupport::GaussPoint, elga.quantity(), elga.components(), perCell);
+  for (std::size_t c = 0; c < perCell.size(); ++c) {
+    for (int q = 0; q < perCell[c]; ++q) {
+      const auto from = elga.entity(elga.firstPoint(c) + static_cast<std::size_t>(q));
+      auto to = out.entity(out.firstPoint(c) + static_cast<std::size_t>(q));
+      std::copy(from.begin(), from.end(), to.begin());
+    }
+  }
+  return out;
+}
+
+// The fields of one step: stored sources (DEPL, SIEF_ELGA, VARI_ELGA) and the derived ones,
+// computed on demand once.
+class StepFields {
+public:
+  StepFields(const Model& model, const MaterialField* materials, const std::vector<bool>& cells,
+             const ResultStep& step, const std::string& resultName, const KeywordTree& kw)
+      : model_(model), materials_(materials), cells_(cells), step_(step), resultName_(resultName), kw_(kw) {}
+
+  // Every field computed so far (asked or intermediate).
+  const std::map<std::string, std::shared_ptr<Field>>& computed() const { return cache_; }
+
+  std::shared_ptr<Field> get(const std::string& name, const std::string& forOption) {
+    if (auto it = cache_.find(name); it != cache_.end()) {
+      return it->second;
+    }
+    auto f = std::make_shared<Field>(compute(name, forOption));
+    cache_[name] = f;
+    return f;
+  }
+
+private:
+  const Field& source(const std::string& name, const std::string& forOption) {
+    const Field* f = step_.field(name);
+    if (f == nullptr) {
+      throw UserError(
+          Diagnostic::fatal("CALC_4",
+                            fmt::format("result {} has no {} at NUME_ORDRE {}: {} is computed from it",
+                                        resultName_, name, step_.number, forOption),
+                            kw_.location())
+              .withNote(name == "VARI_ELGA" ? "internal variables are stored by STAT_NON_LINE"
+                                            : "the result must hold the field the option starts from"));
+    }
+    return *f;
+  }
+
+  Field compute(const std::string& name, const std::string& forOption) {
+    const Mesh& mesh = *model_.mesh;
+    if (name == "SIEF_ELGA" || name == "SIGM_ELGA") {
+      return restrictToCells(source("SIEF_ELGA", forOption), cells_);
+    }
+    if (name == "SIEF_ELNO" || name == "SIGM_ELNO") {
+      return extrapolateToCellNodes(model_, source("SIEF_ELGA", forOption), cells_);
+    }
+    if (name == "EPSI_ELGA") {
+      return strainAtGaussPoints(model_, source("DEPL", forOption), materials_, cells_);
+    }
+    if (name == "EPSI_ELNO") {
+      return extrapolateToCellNodes(model_, *get("EPSI_ELGA", forOption), cells_);
+    }
+    if (name == "VARI_ELNO") {
+      return extrapolateToCellNodes(model_, source("VARI_ELGA", forOption), cells_);
+    }
+    if (name == "SIEQ_ELGA") {
+      return equivalentStressField(*get("SIEF_ELGA", forOption));
+    }
+    if (name == "SIEQ_ELNO") {
+      return equivalentStressField(*get("SIGM_ELNO", forOption));
+    }
+    if (name.ends_with("_NOEU")) {
+      return averageAtNodes(mesh, *get(name.substr(0, name.size() - 5) + "_ELNO", forOption));
+    }
+    STELLA_ASSERT(false, "no derivation rule for a CALC_CHAMP option");
+    return Field();
+  }
+
+  const Model& model_;
+  const MaterialField* materials_;
+  const std::vector<bool>& cells_;
+  const ResultStep& step_;
+  const std::string& resultName_;
+  const KeywordTree& kw_;
+  std::map<std::string, std::shared_ptr<Field>> cache_;
+};
+
+struct ForceContext {
+  const Model& model;
+  const DofMap dofs;
+  const std::vector<Excitation>* loads;
+  const MaterialField* materials;
+  std::vector<Eigen::VectorXd> cache;
+};
+
+void computeForces(ForceContext& ctx, ResultStep& step, const std::vector<std::string>& options,
+                   const std::string& name, const KeywordTree& kw) {
+  const Field* sief = step.field("SIEF_ELGA");
+  if (sief == nullptr) {
+    throw UserError(Diagnostic::fatal(
+        "CALC_4",
+        fmt::format("result {} has no SIEF_ELGA at NUME_ORDRE {}: FORC_NODA and REAC_NODA need it", name,
+                    step.number),
+        kw.locationOf("FORCE")));
+  }
+  const Eigen::VectorXd forc = forcesFromStress(ctx.model, ctx.dofs, *sief);
+  for (const auto& option : options) {
+    if (option == "FORC_NODA") {
+      step.fields["FORC_NODA"] = nodalField(ctx.model, ctx.dofs, forc, "DEPL_R");
+    } else if (option == "REAC_NODA") {
+      if (ctx.loads == nullptr) {
+        throw UserError(Diagnostic::fatal(
+            "CALC_5", fmt::format("the loads of result {} are unknown, REAC_NODA cannot be formed", name),
+            kw.locationOf("FORCE")));
+      }
+      const Eigen::VectorXd fext = externalForces(*ctx.loads, step.time, ctx.dofs, ctx.materials, ctx.cache);
+      step.fields["REAC_NODA"] = nodalField(ctx.model, ctx.dofs, forc - fext, "DEPL_R");
     }
   }
 }
 
 Value runCalcChamp(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
-  refuseOthers(kw);
+  const std::vector<std::string> options = requestedOptions(kw);
   auto concept_ = kw.conceptValue("RESULTAT");
   auto source = conceptData<Result>(concept_);
   STELLA_ASSERT(source != nullptr, "RESULTAT holds no result");
@@ -67,41 +279,57 @@ Value runCalcChamp(OperatorCall& call) {
                                       kw.locationOf("RESULTAT")));
   }
   auto materials = std::dynamic_pointer_cast<MaterialField>(source->material);
+  std::vector<CellId> group;
+  if (kw.has("GROUP_MA")) {
+    group = selectCells(*model->mesh, kw);
+    if (std::find(options.begin(), options.end(), "FORC_NODA") != options.end() ||
+        std::find(options.begin(), options.end(), "REAC_NODA") != options.end()) {
+      throw UserError(Diagnostic::fatal("CALC_2",
+                                        "CALC_CHAMP FORCE restricted to GROUP_MA is not implemented yet",
+                                        kw.locationOf("GROUP_MA"))
+                          .withNote("compute FORC_NODA / REAC_NODA on the whole model (TOUT='OUI')"));
+    }
+  }
+  const std::vector<bool> cells = selectedVolumeCells(*model, group);
   // Without reuse=, the new result shares the fields of the source and gets the new ones.
   std::shared_ptr<Result> result = call.reused ? source : std::make_shared<Result>(*source);
-  const DofMap dofs(*model);
+  const auto steps = selectedSteps(*result, concept_->name, kw);
+
+  std::vector<std::string> fieldOptions;
+  std::vector<std::string> forceOptions;
+  for (const auto& o : options) {
+    (o == "FORC_NODA" || o == "REAC_NODA" ? forceOptions : fieldOptions).push_back(o);
+  }
+  std::unique_ptr<ForceContext> forces;
   const auto* loads = rememberedLoads(*source);
-  std::vector<Eigen::VectorXd> cache;
-  const auto options = kw.has("FORCE") ? kw.texts("FORCE") : std::vector<std::string>{};
-  for (ResultStep* step : selectedSteps(*result, kw)) {
-    const Field* sief = step->field("SIEF_ELGA");
-    if (sief == nullptr) {
-      throw UserError(
-          Diagnostic::fatal("CALC_4",
-                            fmt::format("result {} has no SIEF_ELGA at NUME_ORDRE {}: FORC_NODA and "
-                                        "REAC_NODA need it",
-                                        concept_->name, step->number),
-                            kw.locationOf("FORCE")));
+  if (!forceOptions.empty()) {
+    forces = std::make_unique<ForceContext>(ForceContext{*model, DofMap(*model), loads, materials.get(), {}});
+  }
+  std::set<std::string> intermediates;
+  for (ResultStep* step : steps) {
+    StepFields fields(*model, materials.get(), cells, *step, concept_->name, kw);
+    for (const auto& option : fieldOptions) {
+      step->fields[option] = fields.get(option, option);
     }
-    const Eigen::VectorXd forc = forcesFromStress(*model, dofs, *sief);
-    for (const auto& option : options) {
-      if (option == "FORC_NODA") {
-        step->fields["FORC_NODA"] = nodalField(*model, dofs, forc, "DEPL_R");
-        continue;
+    for (const auto& [name, field] : fields.computed()) {
+      if (std::find(fieldOptions.begin(), fieldOptions.end(), name) == fieldOptions.end()) {
+        intermediates.insert(name);
       }
-      if (loads == nullptr) {
-        throw UserError(Diagnostic::fatal(
-            "CALC_5",
-            fmt::format("the loads of result {} are unknown, REAC_NODA cannot be formed", concept_->name),
-            kw.locationOf("FORCE")));
-      }
-      const Eigen::VectorXd fext = externalForces(*loads, step->time, dofs, materials.get(), cache);
-      step->fields["REAC_NODA"] = nodalField(*model, dofs, forc - fext, "DEPL_R");
+    }
+    if (forces) {
+      computeForces(*forces, *step, forceOptions, concept_->name, kw);
     }
   }
   if (loads != nullptr && !call.reused) {
     rememberLoads(result, *loads);
   }
+  call.session.message() << fmt::format("  CALC_CHAMP: {} stored on {} step(s) of {}",
+                                        fmt::join(options, ", "), steps.size(), concept_->name);
+  if (!intermediates.empty()) {
+    call.session.message() << fmt::format(" (computed on the way, not stored: {})",
+                                          fmt::join(intermediates, ", "));
+  }
+  call.session.message() << "\n";
   return call.makeConcept(result);
 }
 

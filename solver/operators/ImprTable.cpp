@@ -79,7 +79,9 @@ Value runImprTable(OperatorCall& call) {
   STELLA_ASSERT(table != nullptr, "TABLE holds no table");
   std::string separator = kw.textOr("SEPARATEUR", " ");
   Table shown = selection(*table, kw);
-  std::string text = separator != " " ? shown.format("CSV", separator) : shown.format(format);
+  const std::string realFormat = kw.textOr("FORMAT_R", "E12.5");
+  std::string text =
+      separator != " " ? shown.format("CSV", separator, realFormat) : shown.format(format, " ", realFormat);
   std::int64_t unit = kw.integerOr("UNITE", 8);
   if (unit == 8) {
     call.session.result() << text << "\n";

@@ -1,6 +1,9 @@
 // TEST_RESU RESU: tests one value of a result field (at a node, at a cell's Gauss point, or the
 // MIN/MAX/SOMM/SOMM_ABS of a component) or a step parameter (PARA), printing OK/NOOK lines.
-// CHAM_NO, CHAM_ELEM, CARTE and the other forms are refused as not implemented yet.
+// Element fields are designated by MAILLE / GROUP_MA and POINT (ELGA: Gauss point; ELNO: local
+// node) or, for ELNO fields, NOEUD. CHAM_NO, CHAM_ELEM and CARTE are refused as not implemented
+// yet: no command of the catalogue makes such a concept (CREA_CHAMP is not there); the other
+// forms are refused likewise.
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/post/FieldSelection.hpp"
@@ -70,6 +73,8 @@ void testResu(OperatorCall& call, const KeywordTree& occ) {
           Diagnostic::fatal("RESU_4", "the keywords designate several values; one is needed", occ.location())
               .withNote(field.support() == FieldSupport::Node
                             ? "give NOEUD or a GROUP_NO of one node, or TYPE_TEST"
+                        : field.support() == FieldSupport::CellNode
+                            ? "give MAILLE (or a GROUP_MA of one cell) and NOEUD (or POINT), or TYPE_TEST"
                             : "give MAILLE (or a GROUP_MA of one cell) and POINT, or TYPE_TEST"));
     }
     const std::size_t e = sel.entities.front();
@@ -79,7 +84,13 @@ void testResu(OperatorCall& call, const KeywordTree& occ) {
           occ.location()));
     }
     value = field.value(e, c);
-    header.emplace_back(field.support() == FieldSupport::Node ? "NOEUD" : "MAILLE", sel.label);
+    if (field.support() == FieldSupport::CellNode && !occ.has("POINT")) {
+      const auto space = sel.label.find(' '); // "cell node"
+      header.emplace_back("MAILLE", sel.label.substr(0, space));
+      header.emplace_back("NOEUD", sel.label.substr(space + 1));
+    } else {
+      header.emplace_back(field.support() == FieldSupport::Node ? "NOEUD" : "MAILLE", sel.label);
+    }
   }
   if (occ.textOr("VALE_ABS", "NON") == "OUI") {
     value = std::fabs(value);
@@ -89,7 +100,18 @@ void testResu(OperatorCall& call, const KeywordTree& occ) {
 
 Value runTestResu(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
-  for (const char* k : {"CHAM_NO", "CHAM_ELEM", "CARTE", "GENE", "OBJET", "TEST_NAN", "MAILLAGE"}) {
+  for (const char* k : {"CHAM_NO", "CHAM_ELEM", "CARTE"}) {
+    if (kw.has(k)) {
+      throw UserError(
+          Diagnostic::fatal("TEST_1", fmt::format("TEST_RESU {} is not implemented yet", k), kw.locationOf(k))
+              .withNote(
+                  "no command of stella makes a field concept (cham_no, cham_elem, carte) yet: CREA_CHAMP "
+                  "is not in the catalogue. Test the field inside its result with "
+                  "RESU=_F(RESULTAT=..., NOM_CHAM='SIEF_NOEU', NOM_CMP=..., NOEUD=...), or "
+                  "NOM_CHAM='SIEF_ELNO' with MAILLE and NOEUD"));
+    }
+  }
+  for (const char* k : {"GENE", "OBJET", "TEST_NAN", "MAILLAGE"}) {
     if (kw.has(k)) {
       throw UserError(
           Diagnostic::fatal("TEST_1", fmt::format("TEST_RESU {} is not implemented yet", k), kw.locationOf(k))

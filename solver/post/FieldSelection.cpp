@@ -43,6 +43,52 @@ std::size_t singleNodeOfGroup(const Mesh& mesh, const std::string& group, const 
   return static_cast<std::size_t>(nodes->front());
 }
 
+// ELNO values at the nodes NOEUD / GROUP_NO of the cells: one value per (cell, node) pair.
+EntitySelection cellNodeEntities(const Mesh& mesh, const Field& field, const std::vector<CellId>& cells,
+                                 const KeywordTree& occ) {
+  std::vector<NodeId> nodes;
+  if (occ.has("NOEUD")) {
+    auto n = mesh.findNode(occ.text("NOEUD"));
+    if (!n) {
+      throw UserError(Diagnostic::fatal("GROUP_3",
+                                        fmt::format("the mesh has no node named '{}'", occ.text("NOEUD")),
+                                        occ.locationOf("NOEUD")));
+    }
+    nodes.push_back(*n);
+  } else {
+    for (const auto& g : occ.texts("GROUP_NO")) {
+      const auto* group = mesh.nodeGroup(g);
+      if (group == nullptr) {
+        throw UserError(Diagnostic::fatal("GROUP_2",
+                                          fmt::format("the mesh has no node group (GROUP_NO) '{}'", g),
+                                          occ.locationOf("GROUP_NO")));
+      }
+      nodes.insert(nodes.end(), group->begin(), group->end());
+    }
+  }
+  EntitySelection s;
+  for (CellId c : cells) {
+    const auto uc = static_cast<std::size_t>(c);
+    if (uc >= field.cellCount() || field.pointCount(uc) == 0) {
+      continue;
+    }
+    const auto cellNodes = mesh.cellNodes(c);
+    for (std::size_t k = 0; k < cellNodes.size(); ++k) {
+      if (std::find(nodes.begin(), nodes.end(), cellNodes[k]) != nodes.end()) {
+        s.entities.push_back(field.firstPoint(uc) + k);
+        s.label = fmt::format("{} {}", mesh.cellName(c), mesh.nodeName(cellNodes[k]));
+      }
+    }
+  }
+  s.single = s.entities.size() == 1 && !occ.has("TYPE_TEST");
+  if (s.entities.empty()) {
+    throw UserError(
+        Diagnostic::fatal("RESU_5", "no cell of the selection has the node(s) given", occ.location())
+            .withNote("give MAILLE (or GROUP_MA) and one of its nodes with NOEUD"));
+  }
+  return s;
+}
+
 } // namespace
 
 const ResultStep& selectStep(const Result& result, const std::string& resultName, const KeywordTree& occ) {
@@ -174,6 +220,10 @@ EntitySelection selectEntities(const Mesh& mesh, const Field& field, const Keywo
     s.single = cells.size() == 1 && !occ.has("TYPE_TEST");
     s.label = cells.size() == 1 ? mesh.cellName(cells.front()) : "";
     return s;
+  }
+  if (field.support() == FieldSupport::CellNode && !occ.has("POINT") &&
+      (occ.has("NOEUD") || occ.has("GROUP_NO"))) {
+    return cellNodeEntities(mesh, field, cells, occ);
   }
   if (occ.has("POINT")) {
     if (cells.size() != 1) {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <stdexcept>
+#include <string>
 
 namespace stella {
 
@@ -55,18 +57,75 @@ std::vector<std::string> Table::columnNames() const {
 }
 
 namespace {
-std::string cellText(const Value& v) {
+
+// "E12.5" -> {'E', 12, 5}; anything else falls back to E12.5.
+struct RealFormat {
+  char kind = 'E';
+  int width = 12;
+  int digits = 5;
+};
+
+RealFormat parseRealFormat(const std::string& f) {
+  RealFormat r;
+  if (f.size() < 2 || (f[0] != 'E' && f[0] != 'F' && f[0] != 'G' && f[0] != 'D')) {
+    return r;
+  }
+  const auto dot = f.find('.');
+  try {
+    r.width = std::stoi(f.substr(1, dot == std::string::npos ? std::string::npos : dot - 1));
+    r.digits = dot == std::string::npos ? 0 : std::stoi(f.substr(dot + 1));
+    r.kind = f[0] == 'D' ? 'E' : f[0];
+  } catch (const std::exception&) {
+    return RealFormat{};
+  }
+  return r;
+}
+
+std::string cellText(const Value& v, const RealFormat& f) {
   if (v.isNone()) {
     return "-";
   }
   if (v.isReal()) {
-    return fmt::format("{:.6E}", v.asReal());
+    const double x = v.asReal();
+    switch (f.kind) {
+    case 'F':
+      return fmt::format("{:{}.{}f}", x, f.width, f.digits);
+    case 'G':
+      return fmt::format("{:{}.{}G}", x, f.width, f.digits);
+    default:
+      return fmt::format("{:{}.{}E}", x, f.width, f.digits);
+    }
   }
   return v.str();
 }
+
+std::string trimmed(const std::string& s) {
+  const auto b = s.find_first_not_of(' ');
+  return b == std::string::npos ? "" : s.substr(b);
+}
+
 } // namespace
 
-std::string Table::format(const std::string& kind, const std::string& separator) const {
+std::string Table::columnType(const Column& column) const {
+  bool real = false;
+  std::size_t longest = 0;
+  bool text = false;
+  for (const auto& v : column.cells) {
+    real = real || v.isReal();
+    if (v.isString()) {
+      text = true;
+      longest = std::max(longest, v.asString().size());
+    }
+  }
+  if (text) {
+    return longest <= 8 ? "K8" : longest <= 16 ? "K16" : longest <= 24 ? "K24" : "K80";
+  }
+  return real ? "R" : "I";
+}
+
+std::string Table::format(const std::string& kind, const std::string& separator,
+                          const std::string& realFormat) const {
+  const RealFormat rf = parseRealFormat(realFormat);
   std::string out;
   if (kind == "CSV") {
     for (std::size_t i = 0; i < columns_.size(); ++i) {
@@ -75,7 +134,7 @@ std::string Table::format(const std::string& kind, const std::string& separator)
     out += "\n";
     for (std::size_t r = 0; r < rows_; ++r) {
       for (std::size_t i = 0; i < columns_.size(); ++i) {
-        out += (i ? separator : "") + cellText(columns_[i].cells[r]);
+        out += (i ? separator : "") + trimmed(cellText(columns_[i].cells[r], rf));
       }
       out += "\n";
     }
@@ -91,7 +150,7 @@ std::string Table::format(const std::string& kind, const std::string& separator)
   for (const auto& c : columns_) {
     std::size_t w = std::max<std::size_t>(16, c.name.size());
     for (const auto& v : c.cells) {
-      w = std::max(w, cellText(v).size());
+      w = std::max(w, cellText(v, rf).size());
     }
     widths.push_back(w);
   }
@@ -104,8 +163,11 @@ std::string Table::format(const std::string& kind, const std::string& separator)
     return line + "\n";
   };
   out += row([&](std::size_t i) { return columns_[i].name; });
+  if (kind == "ASTER") {
+    out += row([&](std::size_t i) { return columnType(columns_[i]); });
+  }
   for (std::size_t r = 0; r < rows_; ++r) {
-    out += row([&](std::size_t i) { return cellText(columns_[i].cells[r]); });
+    out += row([&](std::size_t i) { return cellText(columns_[i].cells[r], rf); });
   }
   if (kind == "ASTER") {
     out += "#FIN_TABLE\n";

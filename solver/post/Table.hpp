@@ -30,9 +30,15 @@ public:
   const Column* column(const std::string& name) const;
   std::vector<std::string> columnNames() const;
 
-  // IMPR_TABLE: FORMAT='TABLEAU' (aligned columns), 'ASTER' (with #DEBUT_TABLE markers),
-  // 'CSV' (separator `sep`).
-  std::string format(const std::string& kind, const std::string& separator = ",") const;
+  // IMPR_TABLE: FORMAT='TABLEAU' (aligned columns), 'ASTER' (between #DEBUT_TABLE and
+  // #FIN_TABLE, with a line of column types R, I, K8, K16, K24 or K80 under the names, as
+  // code_aster writes tables it can read back), 'CSV' (the names then the values, separated by
+  // `separator`, no padding: IMPR_TABLE FORMAT='TABLEAU' with SEPARATEUR=','). Reals are
+  // written with FORMAT_R, a Fortran edit descriptor Ew.d, Fw.d or Gw.d (default E12.5).
+  std::string format(const std::string& kind, const std::string& separator = ",",
+                     const std::string& realFormat = "E12.5") const;
+  // The type code_aster gives a column: R, I, or K8 / K16 / K24 / K80 by the longest text.
+  std::string columnType(const Column& column) const;
 
 private:
   Column& ensureColumn(const std::string& name);
