@@ -1,20 +1,162 @@
-// Building the contact constraint of STAT_NON_LINE from its CONTACT keyword.
+// Building the contact constraint of STAT_NON_LINE from its CONTACT keyword: the checks against
+// the analysis (model, DOFs, what is not implemented yet) and the choice of the resolution.
 
 #include "solver/contact/ContactStepConstraint.hpp"
 
 #include "catalog/KeywordTree.hpp"
 #include "interpreter/Diagnostics.hpp"
+#include "solver/contact/DualContactConstraint.hpp"
+#include "solver/contact/PenaltyContactConstraint.hpp"
+#include "solver/functions/InstantList.hpp"
+#include "solver/nonlinear/MechanicalSystem.hpp"
+#include "solver/session/OperatorRegistry.hpp"
+
+#include <fmt/format.h>
 
 namespace stella {
 
+namespace {
+
+using contact::ContactAlgorithm;
+using contact::ContactDefinition;
+
+// The contact zones that are only measured (RESOLUTION='NON' everywhere) need no resolution.
+class GapMeasurement : public contact::ContactConstraint {
+public:
+  using ContactConstraint::ContactConstraint;
+  void addForces(const Eigen::VectorXd&, Eigen::VectorXd&, std::vector<Eigen::Triplet<double>>*) override {}
+  bool symmetric() const override { return true; }
+  void correct(const Eigen::VectorXd&, Eigen::VectorXd&, Eigen::VectorXd&, SaddleSolver&) override {}
+
+protected:
+  std::string resolutionEffects() const override {
+    return "gap measurement only (RESOLUTION='NON': no contact force)";
+  }
+  std::vector<contact::LinkState> resolvedStates(const Eigen::VectorXd&) const override { return {}; }
+};
+
+[[noreturn]] void notImplemented(const std::string& what, const SourceLocation& at, const std::string& note) {
+  throw UserError(Diagnostic::fatal("CONTACT_20",
+                                    fmt::format("STAT_NON_LINE CONTACT: {} is not implemented yet", what), at)
+                      .withNote(note));
+}
+
+void checkAgainstSystem(const ContactDefinition& def, const MechanicalSystem& system,
+                        const SourceLocation& at) {
+  if (def.mesh.get() != system.model().mesh.get()) {
+    throw UserError(Diagnostic::fatal("CONTACT_21",
+                                      "the contact definition (DEFI_CONTACT MODELE) is on another mesh than "
+                                      "the model of STAT_NON_LINE",
+                                      at)
+                        .withNote("build DEFI_CONTACT with MODELE= the model given to STAT_NON_LINE"));
+  }
+  const Mesh& mesh = *def.mesh;
+  for (const auto& zone : def.zones) {
+    for (const std::string& group : {zone.masterGroup, zone.slaveGroup}) {
+      const auto* cells = mesh.cellGroup(group);
+      if (cells == nullptr) {
+        continue;
+      }
+      for (NodeId n : mesh.nodesOfCells(*cells)) {
+        if (system.dofs().dof(n, 0) < 0) {
+          throw UserError(
+              Diagnostic::fatal(
+                  "CONTACT_6",
+                  fmt::format("node {} of contact group '{}' carries no displacement DOF in the "
+                              "model of STAT_NON_LINE",
+                              mesh.nodeName(n), group),
+                  zone.location)
+                  .withNote(
+                      "assign elements to the contact surface in AFFE_MODELE (a rigid surface: its skin "
+                      "with all its DOFs imposed, notice §4.6)"));
+        }
+      }
+    }
+  }
+}
+
+// The algorithm of the resolved zones (one for all, as the discrete formulation solves them
+// together); nullopt when every zone is only measured.
+std::optional<ContactAlgorithm> resolvedAlgorithm(const ContactDefinition& def) {
+  std::optional<ContactAlgorithm> algorithm;
+  for (const auto& z : def.zones) {
+    if (!z.resolve) {
+      continue;
+    }
+    if (algorithm && *algorithm != z.algorithm) {
+      notImplemented(fmt::format("zones with different ALGO_CONT ({} and {})",
+                                 contact::algorithmName(*algorithm), contact::algorithmName(z.algorithm)),
+                     z.location, "give every zone of the discrete formulation the same ALGO_CONT");
+    }
+    algorithm = z.algorithm;
+  }
+  return algorithm;
+}
+
+std::optional<FailurePolicy> interpenetrationPolicy(const KeywordTree& kw) {
+  if (!kw.has("INCREMENT")) {
+    return std::nullopt;
+  }
+  auto list = conceptData<InstantList>(kw.occurrences("INCREMENT").front().conceptValue("LIST_INST"));
+  if (list == nullptr) {
+    return std::nullopt;
+  }
+  for (const FailurePolicy& p : list->failures) {
+    if (p.event == FailurePolicy::Event::Interpenetration) {
+      return p;
+    }
+  }
+  return std::nullopt;
+}
+
+} // namespace
+
 std::unique_ptr<StepConstraint> makeContactConstraint(const KeywordTree& statNonLine,
                                                       MechanicalSystem& system) {
-  (void)system;
   if (!statNonLine.has("CONTACT")) {
     return nullptr;
   }
-  throw UserError(Diagnostic::fatal("SNL_1", "STAT_NON_LINE CONTACT is not implemented yet",
-                                    statNonLine.locationOf("CONTACT")));
+  const SourceLocation at = statNonLine.locationOf("CONTACT");
+  auto def = conceptData<ContactDefinition>(statNonLine.conceptValue("CONTACT"));
+  STELLA_ASSERT(def != nullptr, "CONTACT holds no contact definition");
+  if (def->settings.formulation != contact::Formulation::Discrete) {
+    notImplemented(def->settings.formulation == contact::Formulation::Continue ? "FORMULATION='CONTINUE'"
+                                                                               : "FORMULATION='LIAISON_UNIL'",
+                   def->location,
+                   "FORMULATION='DISCRETE' (ALGO_CONT='CONTRAINTE', 'GCP' or 'PENALISATION') is available");
+  }
+  checkAgainstSystem(*def, system, at);
+  const std::optional<ContactAlgorithm> algorithm = resolvedAlgorithm(*def);
+  const std::optional<FailurePolicy> policy = interpenetrationPolicy(statNonLine);
+  std::unique_ptr<contact::ContactConstraint> c;
+  if (!algorithm) {
+    c = std::make_unique<GapMeasurement>(def, system.dofs());
+  } else if (*algorithm == ContactAlgorithm::Penalty) {
+    c = std::make_unique<contact::PenaltyContactConstraint>(def, system.dofs(), policy);
+  } else {
+    if (def->hasFriction()) {
+      notImplemented(
+          fmt::format("FROTTEMENT='COULOMB' with ALGO_CONT='{}' (dual contact with penalised friction)",
+                      contact::algorithmName(*algorithm)),
+          def->location, "use ALGO_CONT='PENALISATION' with E_N for contact with friction");
+    }
+    if (*algorithm == ContactAlgorithm::Gcp && !def->settings.gcpTolerance) {
+      throw UserError(Diagnostic::fatal("CONTACT_24",
+                                        "ALGO_CONT='GCP' needs RESI_ABSO, the interpenetration it tolerates",
+                                        def->location)
+                          .withNote("RESI_ABSO is in the mesh's length unit; start with 1e-3 times the mean "
+                                    "interpenetration measured without contact (notice §3.2.1.3, §4.8)"));
+    }
+    if (policy && policy->action == FailurePolicy::Action::AdaptPenalty) {
+      notImplemented(fmt::format("DEFI_LIST_INST ACTION='ADAPT_COEF_PENA' with ALGO_CONT='{}' (it adapts E_N "
+                                 "of ALGO_CONT='PENALISATION')",
+                                 contact::algorithmName(*algorithm)),
+                     at, "use ALGO_CONT='PENALISATION', or remove the INTERPENETRATION event");
+    }
+    c = std::make_unique<contact::DualContactConstraint>(def, system.dofs(), *algorithm);
+  }
+  c->initialize();
+  return c;
 }
 
 } // namespace stella

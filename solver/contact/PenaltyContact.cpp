@@ -41,6 +41,10 @@ PenaltyEvaluation evaluatePenalty(const ContactProblem& p, const FrictionRows* f
   if (withFriction) {
     s1 = fr->T1 * du;
     s2 = threeD ? VectorXd(fr->T2 * du) : VectorXd::Zero(m);
+    if (par.slipOffset.rows() == m) {
+      s1 += par.slipOffset.col(0);
+      s2 += par.slipOffset.col(1);
+    }
   }
   for (Index i = 0; i < m; ++i) {
     if (!(gap(i) < 0.0) && !p.isBilateral(i)) {

@@ -27,6 +27,10 @@ struct PenaltyParameters {
   Eigen::VectorXd tangentPenalty;    // E_T per link
   Eigen::VectorXd coulomb;           // mu per link
   Eigen::VectorXd matrixCoefficient; // COEF_MATR_FROT per link
+  // Slip already there at du = 0 (links x 2; empty: none): the slip is s = [T1 du, T2 du] +
+  // slipOffset. STAT_NON_LINE puts there the slip since the step start not seen by du and the
+  // elastic slip -t/E_T left by the previous step (incremental friction).
+  Eigen::MatrixXd slipOffset;
 };
 
 struct FrictionRows {

@@ -1,0 +1,256 @@
+// The part of the discrete contact constraints shared by every resolution: pairing, geometric
+// loop, measured gaps, report, CONT_NOEU.
+
+#include "solver/contact/ContactConstraint.hpp"
+
+#include "solver/database/Result.hpp"
+#include "solver/mesh/MeshGeometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+namespace stella::contact {
+
+namespace {
+
+// Gap of a link after the displacement increment `du` since its pairing (normal kept fixed).
+double linearGap(const ContactLink& l, const std::vector<double>& du) {
+  auto at = [&](NodeId n) {
+    const auto i = static_cast<std::size_t>(n) * 3;
+    return Point3{du[i], du[i + 1], du[i + 2]};
+  };
+  Point3 rel = at(l.slave);
+  for (std::size_t j = 0; j < l.masterNodes.size(); ++j) {
+    rel = rel - l.weights[j] * at(l.masterNodes[j]);
+  }
+  return l.gap + dot(rel, l.normal);
+}
+
+} // namespace
+
+ContactConstraint::ContactConstraint(std::shared_ptr<const ContactDefinition> definition, const DofMap& dofs)
+    : definition_(std::move(definition)), dofs_(dofs) {
+  for (const auto& z : definition_->zones) {
+    resolvedZone_.push_back(z.resolve);
+    anyResolved_ = anyResolved_ || z.resolve;
+  }
+  contactEquations_ = contactEquations(*definition_, dofs_);
+  uPairing_ = Eigen::VectorXd::Zero(dofs_.physicalCount());
+  uStart_ = uPairing_;
+}
+
+void ContactConstraint::initialize() {
+  pairAt(uStart_);
+  states_ = measuredGaps(links_);
+}
+
+std::string ContactConstraint::effects() const {
+  const auto& s = definition_->settings;
+  std::string loop;
+  switch (s.geometricUpdate) {
+  case GeometricUpdate::Automatic:
+    loop = fmt::format("geometric loop AUTOMATIQUE (ITER_GEOM_MAXI={}, RESI_GEOM={})",
+                       s.maxGeometricIterations, s.geometricResidual);
+    break;
+  case GeometricUpdate::Controlled:
+    loop = fmt::format("geometric loop CONTROLE (NB_ITER_GEOM={})", s.geometricIterations);
+    break;
+  case GeometricUpdate::None:
+    loop = "no geometric update (REAC_GEOM='SANS': paired once)";
+    break;
+  }
+  std::size_t slaves = 0;
+  for (const auto& z : definition_->zones) {
+    slaves += zoneSlaveNodes(*definition_->mesh, z).size();
+  }
+  return fmt::format("contact DISCRETE {}, {} zone(s), {} slave node(s), {}, {}", resolutionEffects(),
+                     definition_->zones.size(), slaves,
+                     definition_->hasFriction() ? "Coulomb friction" : "no friction", loop);
+}
+
+void ContactConstraint::pairAt(const Eigen::VectorXd& u) {
+  const Mesh& mesh = *definition_->mesh;
+  const std::vector<double> disp = nodalDisplacement(dofs_, mesh.nodeCount(), u);
+  links_ = pairAll(*definition_, meshPositions(mesh, &disp));
+  rows_ = buildLinkRows(links_, dofs_, resolvedZone_, {}, withFrictionRows());
+  uPairing_ = u;
+  ++pairings_;
+  paired();
+}
+
+void ContactConstraint::beginStep(const Eigen::VectorXd& u, double time) {
+  uStart_ = u;
+  time_ = time;
+  geometricIterations_ = 1;
+  contactIterations_ = 0;
+  lastGeometricResidual_.reset();
+  alarms_.clear();
+  if (definition_->settings.geometricUpdate != GeometricUpdate::None) {
+    pairAt(u);
+  } else {
+    paired(); // the same pairing, a new step start
+  }
+}
+
+Eigen::VectorXd ContactConstraint::gapsAt(const Eigen::VectorXd& u) const {
+  return rows_.problem.gap + rows_.problem.A * (u - uPairing_);
+}
+
+double ContactConstraint::geometricResidual(const Eigen::VectorXd& u) const {
+  double change = 0.0;
+  for (int e : contactEquations_) {
+    change = std::max(change, std::abs(u(e) - uPairing_(e)));
+  }
+  // The step's displacement of the whole structure: contact nodes that hardly move (a body
+  // pressed on a fixed one) must not make the criterion a ratio of round-off errors.
+  const double step = u.size() > 0 ? (u - uStart_).cwiseAbs().maxCoeff() : 0.0;
+  if (step > 0.0) {
+    return change / step;
+  }
+  return change > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;
+}
+
+bool ContactConstraint::acceptConvergence(const Eigen::VectorXd& u) {
+  if (!acceptResolution(u)) {
+    return false;
+  }
+  const auto& s = definition_->settings;
+  if (anyResolved_) {
+    const double r = geometricResidual(u);
+    lastGeometricResidual_ = r;
+    if (s.geometricUpdate == GeometricUpdate::Automatic && r > s.geometricResidual) {
+      if (geometricIterations_ >= s.maxGeometricIterations) {
+        throw UserError(
+            Diagnostic::noConvergence(
+                "CONTACT_GEOM_1",
+                fmt::format("the geometric loop of contact did not converge at INST {}: after {} pairings "
+                            "the contact nodes still move by {:.3e} of the step's displacement "
+                            "(RESI_GEOM = {})",
+                            time_, geometricIterations_, r, s.geometricResidual),
+                definition_->location)
+                .withNote("raise ITER_GEOM_MAXI, refine the list of instants, check the choice of master "
+                          "and slave surfaces and their meshes, or try LISSAGE='OUI' (notice §2.4.3.2)"));
+      }
+      pairAt(u);
+      ++geometricIterations_;
+      return false;
+    }
+    if (s.geometricUpdate == GeometricUpdate::Controlled) {
+      if (geometricIterations_ < s.geometricIterations) {
+        pairAt(u);
+        ++geometricIterations_;
+        return false;
+      }
+      if (s.geometricIterations >= 2 && r > 0.01) {
+        noteAlarm(fmt::format("CONTACT_GEOM_2: REAC_GEOM='CONTROLE': after NB_ITER_GEOM = {} pairings the "
+                              "geometric criterion is {:.3e} > 1 %: check the result (notice §2.4.3.2)",
+                              s.geometricIterations, r));
+      }
+    }
+  }
+  finishStep(u);
+  return true;
+}
+
+void ContactConstraint::finishStep(const Eigen::VectorXd& u) {
+  const Mesh& mesh = *definition_->mesh;
+  std::vector<LinkState> states = measuredGaps(links_);
+  const std::vector<LinkState> rowStates = resolvedStates(u);
+  activeLinks_ = 0;
+  for (std::size_t i = 0; i < rowStates.size(); ++i) {
+    states[static_cast<std::size_t>(rows_.link[i])] = rowStates[i];
+    activeLinks_ += rowStates[i].status != LinkStatus::Open ? 1 : 0;
+  }
+  // Zones only measured (RESOLUTION='NON'): the geometric gap at u (paired again unless
+  // REAC_GEOM='SANS', where the gap is linearised on the first pairing).
+  const std::vector<double> disp = nodalDisplacement(dofs_, mesh.nodeCount(), u);
+  const std::vector<double> change = nodalDisplacement(dofs_, mesh.nodeCount(), u - uPairing_);
+  const bool repair = definition_->settings.geometricUpdate != GeometricUpdate::None;
+  PairingOptions options;
+  options.dimension = mesh.dimension();
+  options.smoothing = definition_->settings.smoothing;
+  std::size_t offset = 0;
+  for (std::size_t z = 0; z < definition_->zones.size(); ++z) {
+    std::size_t count = 0;
+    while (offset + count < links_.size() && links_[offset + count].zone == static_cast<int>(z)) {
+      ++count;
+    }
+    if (!resolvedZone_[z]) {
+      std::vector<ContactLink> fresh;
+      if (repair) {
+        fresh =
+            pairZone(mesh, meshPositions(mesh, &disp), static_cast<int>(z), definition_->zones[z], options);
+      }
+      for (std::size_t k = offset; k < offset + count; ++k) {
+        if (repair && k - offset < fresh.size()) {
+          links_[k] = fresh[k - offset];
+          states[k].gap = links_[k].gap;
+        } else {
+          states[k].gap = linearGap(links_[k], change);
+        }
+      }
+    }
+    offset += count;
+  }
+  maxInterpenetration_ = 0.0;
+  NodeId worst = -1;
+  for (std::size_t k = 0; k < links_.size(); ++k) {
+    if (links_[k].paired && -states[k].gap > maxInterpenetration_) {
+      maxInterpenetration_ = -states[k].gap;
+      worst = links_[k].slave;
+    }
+  }
+  bool measuredPenetration = false;
+  for (std::size_t k = 0; k < links_.size(); ++k) {
+    measuredPenetration =
+        measuredPenetration ||
+        (links_[k].paired && !resolvedZone_[static_cast<std::size_t>(links_[k].zone)] && states[k].gap < 0.0);
+  }
+  if (measuredPenetration) {
+    noteAlarm(fmt::format("CONTACT_8: interpenetration of {:.6e} at slave node {} in a zone with "
+                          "RESOLUTION='NON' (contact measured, not resolved: notice §4.8)",
+                          maxInterpenetration_, worst >= 0 ? mesh.nodeName(worst) : std::string("-")));
+  }
+  accepted(rowStates);
+  states_ = std::move(states);
+  stepAlarms_ = std::move(alarms_);
+  alarms_.clear();
+}
+
+std::string ContactConstraint::iterationNote() const {
+  return fmt::format("CONT {} act. pene {:.2e}", noteActive_, notePenetration_);
+}
+
+void ContactConstraint::reportStep(std::ostream& log) const {
+  log << fmt::format("   contact: {} geometric iteration(s), {} contact iteration(s)\n", geometricIterations_,
+                     contactIterations_);
+  log << fmt::format("   Nombre de liaisons de contact : {}\n", activeLinks_);
+  log << fmt::format("   interpenetration maximale : {:.6e}\n", maxInterpenetration_);
+  for (const std::string& a : stepAlarms_) {
+    log << "   <A> " << a << '\n';
+  }
+}
+
+void ContactConstraint::store(ResultStep& step) const {
+  step.fields["CONT_NOEU"] = std::make_shared<Field>(buildContNoeu(
+      static_cast<std::size_t>(definition_->mesh->nodeCount()), links_, states_, definition_->hasFriction()));
+}
+
+std::string ContactConstraint::singularNote() const {
+  std::vector<std::string> zones;
+  for (std::size_t z = 0; z < definition_->zones.size(); ++z) {
+    zones.push_back(fmt::format("zone {}: GROUP_MA_ESCL='{}', GROUP_MA_MAIT='{}'", z + 1,
+                                definition_->zones[z].slaveGroup, definition_->zones[z].masterGroup));
+  }
+  return fmt::format(
+      "a body may be held only by contact ({}): the discrete formulation solves the mechanical problem "
+      "without the contact conditions first, so the stiffness must be invertible without them (notice "
+      "§4.4.2): hold the body with springs of small stiffness (modelling DIS_T or 2D_DIS_T on POI1 cells "
+      "made by CREA_MAILLAGE CREA_POI1, stiffness given by AFFE_CARA_ELEM) or impose DDL_IMPO on one of "
+      "its points",
+      fmt::join(zones, "; "));
+}
+
+} // namespace stella::contact

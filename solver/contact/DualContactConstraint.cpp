@@ -1,0 +1,201 @@
+// Dual discrete contact (CONTRAINTE, GCP) coupled with the Newton iterations of STAT_NON_LINE.
+
+#include "solver/contact/DualContactConstraint.hpp"
+
+#include "solver/nonlinear/SaddleSolver.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+
+namespace stella::contact {
+
+namespace {
+
+// K^-1 with homogeneous relations and prescribed DOFs, through the driver's last factorisation.
+class SaddleStiffness : public StiffnessInverse {
+public:
+  SaddleStiffness(SaddleSolver& solver, Eigen::Index relations, Eigen::Index equations)
+      : solver_(solver), zeroRelations_(Eigen::VectorXd::Zero(relations)),
+        zeroPrescribed_(Eigen::VectorXd::Zero(equations)) {}
+  void solve(Eigen::Ref<Eigen::MatrixXd> rhs) override {
+    for (Eigen::Index j = 0; j < rhs.cols(); ++j) {
+      Eigen::VectorXd x;
+      Eigen::VectorXd y;
+      solver_.solve(rhs.col(j), zeroRelations_, zeroPrescribed_, x, y);
+      rhs.col(j) = x;
+      ++solves;
+    }
+  }
+  // x = K^-1 f and the multipliers' part y.
+  void solveWithMultipliers(const Eigen::VectorXd& f, Eigen::VectorXd& x, Eigen::VectorXd& y) {
+    solver_.solve(f, zeroRelations_, zeroPrescribed_, x, y);
+    ++solves;
+  }
+
+private:
+  SaddleSolver& solver_;
+  Eigen::VectorXd zeroRelations_;
+  Eigen::VectorXd zeroPrescribed_;
+};
+
+double meshSize(const Mesh& mesh) {
+  double size = 0.0;
+  for (NodeId n = 0; n < mesh.nodeCount(); ++n) {
+    for (double x : mesh.point(n)) {
+      size = std::max(size, std::abs(x));
+    }
+  }
+  return size > 0.0 ? size : 1.0;
+}
+
+} // namespace
+
+DualContactConstraint::DualContactConstraint(std::shared_ptr<const ContactDefinition> definition,
+                                             const DofMap& dofs, ContactAlgorithm algorithm)
+    : ContactConstraint(std::move(definition), dofs), algorithm_(algorithm) {
+  const auto& s = definition_->settings;
+  options_.rightHandSidesPerSolve = s.rightHandSidesPerSolve;
+  options_.iterationFactor = s.contactIterationFactor;
+  options_.stopIfSingular = s.stopIfSingular;
+  if (algorithm_ == ContactAlgorithm::Gcp) {
+    options_.tolerance = s.gcpTolerance.value_or(0.0);
+    options_.maxIterations = s.gcpMaxIterations;
+    options_.admissibleLineSearch = s.lineSearch == LineSearch::Admissible;
+    options_.dirichletPreconditioner = s.dirichletPreconditioner;
+    options_.preconditionerResidual = s.preconditionerResidual;
+    options_.preconditionerIterations = s.preconditionerMaxIterations;
+  }
+  closedTolerance_ = 1e-10 * meshSize(*definition_->mesh);
+}
+
+std::string DualContactConstraint::resolutionEffects() const {
+  const auto& s = definition_->settings;
+  if (algorithm_ == ContactAlgorithm::Gcp) {
+    return fmt::format("GCP (projected conjugate gradient, RESI_ABSO={}, RECH_LINEAIRE={}, PRE_COND={})",
+                       options_.tolerance, options_.admissibleLineSearch ? "ADMISSIBLE" : "NON_ADMISSIBLE",
+                       options_.dirichletPreconditioner ? "DIRICHLET" : "SANS");
+  }
+  return fmt::format("CONTRAINTE (active set on the Schur complement, NB_RESOL={}, ITER_CONT_MULT={})",
+                     s.rightHandSidesPerSolve, s.contactIterationFactor);
+}
+
+void DualContactConstraint::paired() {
+  muLink_.resize(links_.size(), 0.0);
+  bilateral_.resize(links_.size(), 0);
+  const auto m = static_cast<Eigen::Index>(rows_.link.size());
+  mu_ = Eigen::VectorXd::Zero(m);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(i)]);
+    const ContactLink& l = links_[k];
+    if (definition_->zones[static_cast<std::size_t>(l.zone)].slide &&
+        (bilateral_[k] != 0 || l.gap <= closedTolerance_)) {
+      bilateral_[k] = 1;
+      rows_.problem.bilateral[static_cast<std::size_t>(i)] = true;
+    }
+    mu_(i) = muLink_[k];
+  }
+}
+
+void DualContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::VectorXd& forces,
+                                      std::vector<Eigen::Triplet<double>>* tangent) {
+  (void)u;
+  (void)tangent; // dual methods add nothing to the stiffness
+  if (mu_.size() > 0) {
+    forces += rows_.problem.A.transpose() * mu_;
+  }
+}
+
+DualResult DualContactConstraint::solve(const ContactProblem& problem, StiffnessInverse& k,
+                                        const Eigen::VectorXd& du0) const {
+  const Mesh& mesh = *definition_->mesh;
+  try {
+    return algorithm_ == ContactAlgorithm::Gcp ? solveProjectedGradient(problem, k, du0, options_)
+                                               : solveActiveSet(problem, k, du0, options_);
+  } catch (const SingularContactError& e) {
+    const auto& l = links_[static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(e.link())])];
+    throw UserError(
+        Diagnostic::fatal("CONTACT_11",
+                          fmt::format("the active contact links are redundant at INST {}: adding slave node "
+                                      "{} (zone {}) makes the contact Schur complement singular",
+                                      time_, mesh.nodeName(l.slave), l.zone + 1),
+                          definition_->zones[static_cast<std::size_t>(l.zone)].location)
+            .withNote("a slave node also held by DDL_IMPO or a symmetry condition in the normal "
+                      "direction, or two zones constraining the same node, make links redundant "
+                      "(notice §4.7); STOP_SINGULIER='NON' drops such links"));
+  } catch (const ContactNotConverged& e) {
+    throw UserError(
+        Diagnostic::noConvergence(
+            "CONTACT_12",
+            fmt::format("the {} contact algorithm did not converge at INST {} ({} iterations, maximum "
+                        "interpenetration {:.3e})",
+                        algorithmName(algorithm_), time_, e.result.iterations, e.result.maxInterpenetration),
+            definition_->location)
+            .withNote(algorithm_ == ContactAlgorithm::Gcp
+                          ? "raise ITER_GCP_MAXI or RESI_ABSO, or try RECH_LINEAIRE='NON_ADMISSIBLE' "
+                            "then PRE_COND='DIRICHLET' (notice §3.2.1.3)"
+                          : "raise ITER_CONT_MULT"));
+  }
+}
+
+void DualContactConstraint::correct(const Eigen::VectorXd& u, Eigen::VectorXd& ddu, Eigen::VectorXd& dlambda,
+                                    SaddleSolver& solver) {
+  const Eigen::Index m = rows_.problem.A.rows();
+  if (m == 0) {
+    return;
+  }
+  SaddleStiffness k(solver, dlambda.size(), ddu.size());
+  const SparseRows& a = rows_.problem.A;
+  // The free correction: the linear solve included the forces A^T mu of the current multipliers.
+  if (mu_.cwiseAbs().maxCoeff() > 0.0) {
+    Eigen::VectorXd x;
+    Eigen::VectorXd y;
+    k.solveWithMultipliers(a.transpose() * mu_, x, y);
+    ddu -= x;
+    if (y.size() == dlambda.size()) {
+      dlambda -= y;
+    }
+  }
+  ContactProblem problem{a, gapsAt(u), rows_.problem.bilateral};
+  const DualResult r = solve(problem, k, ddu);
+  mu_ = r.lambda;
+  for (Eigen::Index i = 0; i < m; ++i) {
+    muLink_[static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(i)])] = mu_(i);
+  }
+  if (mu_.cwiseAbs().maxCoeff() > 0.0) {
+    Eigen::VectorXd x;
+    Eigen::VectorXd y;
+    k.solveWithMultipliers(a.transpose() * mu_, x, y);
+    ddu += x;
+    if (y.size() == dlambda.size()) {
+      dlambda += y;
+    }
+  }
+  solves_ += k.solves;
+  addContactIterations(r.iterations);
+  noteActive_ = r.activeLinks;
+  notePenetration_ = r.maxInterpenetration;
+}
+
+std::vector<LinkState> DualContactConstraint::resolvedStates(const Eigen::VectorXd& u) const {
+  const Eigen::VectorXd gaps = gapsAt(u);
+  std::vector<LinkState> states(rows_.link.size());
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    const auto row = static_cast<Eigen::Index>(i);
+    states[i].gap = gaps(row);
+    states[i].normalForce = mu_(row);
+    states[i].status = mu_(row) != 0.0 ? LinkStatus::Sliding : LinkStatus::Open;
+  }
+  return states;
+}
+
+void DualContactConstraint::accepted(const std::vector<LinkState>& rowStates) {
+  for (std::size_t i = 0; i < rowStates.size(); ++i) {
+    const auto k = static_cast<std::size_t>(rows_.link[i]);
+    if (definition_->zones[static_cast<std::size_t>(links_[k].zone)].slide &&
+        rowStates[i].normalForce != 0.0) {
+      bilateral_[k] = 1;
+    }
+  }
+}
+
+} // namespace stella::contact

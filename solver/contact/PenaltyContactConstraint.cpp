@@ -1,0 +1,190 @@
+// Penalised discrete contact and friction coupled with the Newton iterations of STAT_NON_LINE.
+
+#include "solver/contact/PenaltyContactConstraint.hpp"
+
+#include "solver/mesh/MeshGeometry.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+namespace stella::contact {
+
+PenaltyContactConstraint::PenaltyContactConstraint(std::shared_ptr<const ContactDefinition> definition,
+                                                   const DofMap& dofs,
+                                                   std::optional<FailurePolicy> interpenetration)
+    : ContactConstraint(std::move(definition), dofs), friction_(definition_->hasFriction()),
+      policy_(interpenetration) {}
+
+std::string PenaltyContactConstraint::resolutionEffects() const {
+  std::vector<std::string> en;
+  for (const auto& z : definition_->zones) {
+    if (z.resolve) {
+      en.push_back(friction_ ? fmt::format("E_N={} E_T={} COULOMB={} COEF_MATR_FROT={}", z.normalPenalty,
+                                           z.tangentPenalty, z.coulomb, z.frictionMatrixCoefficient)
+                             : fmt::format("E_N={}", z.normalPenalty));
+    }
+  }
+  std::string s = fmt::format("PENALISATION ({})", fmt::join(en, "; "));
+  if (policy_) {
+    s += policy_->action == FailurePolicy::Action::AdaptPenalty
+             ? fmt::format(", E_N adapted above PENE_MAXI={} (COEF_MAXI={})", policy_->maxPenetration,
+                           policy_->maxCoefficient)
+             : fmt::format(", stop above PENE_MAXI={}", policy_->maxPenetration);
+  }
+  return s;
+}
+
+void PenaltyContactConstraint::beginStep(const Eigen::VectorXd& u, double time) {
+  ContactConstraint::beginStep(u, time); // pairs (or not) and calls paired()
+}
+
+void PenaltyContactConstraint::updateParameters() {
+  const auto m = static_cast<Eigen::Index>(rows_.link.size());
+  parameters_.friction = friction_;
+  parameters_.normalPenalty.resize(m);
+  parameters_.tangentPenalty.resize(m);
+  parameters_.coulomb.resize(m);
+  parameters_.matrixCoefficient.resize(m);
+  parameters_.slipOffset.resize(0, 2);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const ContactLink& l = links_[static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(i)])];
+    const ContactZone& z = definition_->zones[static_cast<std::size_t>(l.zone)];
+    double en = z.normalPenalty * factor_;
+    if (policy_ && policy_->action == FailurePolicy::Action::AdaptPenalty) {
+      en = std::min(en, std::max(z.normalPenalty, policy_->maxCoefficient));
+    }
+    parameters_.normalPenalty(i) = en;
+    parameters_.tangentPenalty(i) = z.tangentPenalty;
+    parameters_.coulomb(i) = z.coulomb;
+    parameters_.matrixCoefficient(i) = z.frictionMatrixCoefficient;
+  }
+  if (!friction_) {
+    return;
+  }
+  // Slip since the step start not seen by u - u_pairing, plus the elastic slip carried over.
+  const Eigen::VectorXd before = uPairing_ - uStart_;
+  const Eigen::VectorXd s1 = rows_.friction.T1 * before;
+  const Eigen::VectorXd s2 =
+      rows_.friction.T2.rows() > 0 ? Eigen::VectorXd(rows_.friction.T2 * before) : Eigen::VectorXd::Zero(m);
+  parameters_.slipOffset.resize(m, 2);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(i)]);
+    const ContactLink& l = links_[k];
+    parameters_.slipOffset(i, 0) = s1(i) + dot(elasticSlip_[k], l.tangent1);
+    parameters_.slipOffset(i, 1) = s2(i) + dot(elasticSlip_[k], l.tangent2);
+  }
+}
+
+void PenaltyContactConstraint::paired() {
+  elasticSlip_.resize(links_.size(), Point3{0, 0, 0});
+  updateParameters();
+}
+
+PenaltyEvaluation PenaltyContactConstraint::evaluate(const Eigen::VectorXd& u) const {
+  return evaluatePenalty(rows_.problem, friction_ ? &rows_.friction : nullptr, parameters_, u - uPairing_);
+}
+
+void PenaltyContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::VectorXd& forces,
+                                         std::vector<Eigen::Triplet<double>>* tangent) {
+  if (rows_.link.empty()) {
+    return;
+  }
+  PenaltyEvaluation e = evaluate(u);
+  forces += e.force;
+  if (tangent != nullptr) {
+    tangent->insert(tangent->end(), e.tangent.begin(), e.tangent.end());
+    symmetric_ = e.symmetric;
+  }
+  noteActive_ = e.activeLinks;
+  notePenetration_ = e.maxInterpenetration;
+}
+
+void PenaltyContactConstraint::correct(const Eigen::VectorXd& u, Eigen::VectorXd& ddu,
+                                       Eigen::VectorXd& dlambda, SaddleSolver& solver) {
+  // Penalty: the contact is in the residual and the matrix; nothing to project.
+  (void)u;
+  (void)ddu;
+  (void)dlambda;
+  (void)solver;
+}
+
+std::vector<LinkState> PenaltyContactConstraint::resolvedStates(const Eigen::VectorXd& u) const {
+  const PenaltyEvaluation e = evaluate(u);
+  const Eigen::VectorXd gaps = gapsAt(u);
+  std::vector<LinkState> states(rows_.link.size());
+  Eigen::VectorXd s1;
+  Eigen::VectorXd s2;
+  if (friction_) {
+    const Eigen::VectorXd step = u - uStart_;
+    s1 = rows_.friction.T1 * step;
+    s2 = rows_.friction.T2.rows() > 0 ? Eigen::VectorXd(rows_.friction.T2 * step)
+                                      : Eigen::VectorXd::Zero(static_cast<Eigen::Index>(states.size()));
+  }
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    const auto row = static_cast<Eigen::Index>(i);
+    LinkState& s = states[i];
+    s.gap = gaps(row);
+    s.normalForce = e.normalForce(row);
+    s.status = e.status[i];
+    if (friction_ && s.status != LinkStatus::Open) {
+      s.slip = {s1(row), s2(row)};
+      s.friction = {e.frictionForce(row, 0), e.frictionForce(row, 1)};
+    }
+  }
+  return states;
+}
+
+bool PenaltyContactConstraint::acceptResolution(const Eigen::VectorXd& u) {
+  if (!policy_ || rows_.link.empty()) {
+    return true;
+  }
+  const double pene = evaluate(u).maxInterpenetration;
+  if (pene <= policy_->maxPenetration) {
+    return true;
+  }
+  if (policy_->action == FailurePolicy::Action::Stop) {
+    throw UserError(
+        Diagnostic::noConvergence("CONTACT_14",
+                                  fmt::format("interpenetration {:.3e} above PENE_MAXI = {} at INST {} "
+                                              "(DEFI_LIST_INST ECHEC EVENEMENT='INTERPENETRATION', "
+                                              "ACTION='ARRET')",
+                                              pene, policy_->maxPenetration, time_),
+                                  definition_->location)
+            .withNote("raise E_N, or use ACTION='ADAPT_COEF_PENA' to let it be raised automatically"));
+  }
+  const double before = parameters_.normalPenalty.size() > 0 ? parameters_.normalPenalty.maxCoeff() : 0.0;
+  factor_ *= 10.0;
+  updateParameters();
+  const double after = parameters_.normalPenalty.size() > 0 ? parameters_.normalPenalty.maxCoeff() : 0.0;
+  if (after <= before) {
+    factor_ /= 10.0;
+    noteAlarm(fmt::format("CONTACT_15: interpenetration {:.3e} above PENE_MAXI = {} but E_N is already at "
+                          "COEF_MAXI = {}: the step is accepted",
+                          pene, policy_->maxPenetration, policy_->maxCoefficient));
+    return true;
+  }
+  noteAlarm(fmt::format("CONTACT_16: interpenetration {:.3e} above PENE_MAXI = {}: E_N multiplied by 10 "
+                        "(now {:.3e}), Newton iterations go on",
+                        pene, policy_->maxPenetration, after));
+  return false;
+}
+
+void PenaltyContactConstraint::accepted(const std::vector<LinkState>& rowStates) {
+  if (!friction_) {
+    return;
+  }
+  for (std::size_t i = 0; i < rowStates.size(); ++i) {
+    const auto k = static_cast<std::size_t>(rows_.link[i]);
+    const ContactLink& l = links_[k];
+    const double et = parameters_.tangentPenalty(static_cast<Eigen::Index>(i));
+    if (rowStates[i].status == LinkStatus::Open || et <= 0.0) {
+      elasticSlip_[k] = Point3{0, 0, 0};
+      continue;
+    }
+    // t = -E_T s_elastic: the elastic slip that gives the converged friction force.
+    elasticSlip_[k] =
+        (-1.0 / et) * (rowStates[i].friction[0] * l.tangent1 + rowStates[i].friction[1] * l.tangent2);
+  }
+}
+
+} // namespace stella::contact

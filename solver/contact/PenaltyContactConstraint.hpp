@@ -1,0 +1,55 @@
+#pragma once
+// Penalised discrete contact in STAT_NON_LINE (ALGO_CONT='PENALISATION' with E_N, notice
+// §3.2.2) and penalised Coulomb friction (FROTTEMENT='COULOMB', ALGO_FROT='PENALISATION' with
+// E_T, COULOMB, COEF_MATR_FROT, §3.3.2): the contact forces and their tangent enter Newton's
+// residual and matrix; nothing is corrected after the linear solve.
+// Friction is incremental: the slip of a step is measured from the displacement at the step
+// start, and the elastic slip -t/E_T of the last accepted step carries the friction force over
+// (a return mapping on the tangential force). The friction tangent of sliding links is
+// unsymmetric unless COEF_MATR_FROT = 0: the driver then factorises with unsymmetric storage.
+// DEFI_LIST_INST ECHEC EVENEMENT='INTERPENETRATION': above PENE_MAXI, ADAPT_COEF_PENA multiplies
+// E_N by 10 (at most COEF_MAXI) and Newton goes on; ARRET stops the analysis.
+
+#include "solver/contact/ContactConstraint.hpp"
+#include "solver/functions/InstantList.hpp"
+
+#include <optional>
+
+namespace stella::contact {
+
+class PenaltyContactConstraint : public ContactConstraint {
+public:
+  PenaltyContactConstraint(std::shared_ptr<const ContactDefinition> definition, const DofMap& dofs,
+                           std::optional<FailurePolicy> interpenetration);
+
+  void beginStep(const Eigen::VectorXd& u, double time) override;
+  void addForces(const Eigen::VectorXd& u, Eigen::VectorXd& forces,
+                 std::vector<Eigen::Triplet<double>>* tangent) override;
+  bool symmetric() const override { return symmetric_; }
+  void correct(const Eigen::VectorXd& u, Eigen::VectorXd& ddu, Eigen::VectorXd& dlambda,
+               SaddleSolver& solver) override;
+
+  // The current factor on E_N (ADAPT_COEF_PENA).
+  double penaltyFactor() const { return factor_; }
+
+protected:
+  std::string resolutionEffects() const override;
+  void paired() override;
+  std::vector<LinkState> resolvedStates(const Eigen::VectorXd& u) const override;
+  bool acceptResolution(const Eigen::VectorXd& u) override;
+  void accepted(const std::vector<LinkState>& rowStates) override;
+  bool withFrictionRows() const override { return friction_; }
+
+private:
+  PenaltyEvaluation evaluate(const Eigen::VectorXd& u) const;
+  void updateParameters();
+
+  bool friction_ = false;
+  std::optional<FailurePolicy> policy_;
+  double factor_ = 1.0;
+  bool symmetric_ = true;
+  PenaltyParameters parameters_;    // per row of the current pairing
+  std::vector<Point3> elasticSlip_; // per link: -t/E_T of the last accepted step
+};
+
+} // namespace stella::contact
