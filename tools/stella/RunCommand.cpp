@@ -2,9 +2,11 @@
 
 #include "Commands.hpp"
 #include "solver/job/BatchJob.hpp"
+#include "solver/nonlinear/ProgressLine.hpp"
 
 #include <charconv>
 #include <iostream>
+#include <unistd.h>
 
 namespace stella::cli {
 
@@ -43,6 +45,10 @@ int run(const RunArguments& args) {
   options.referenceOnly = args.referenceOnly;
   options.keepWorkDirectory = args.keepWork;
   options.echo = !args.quiet;
+  // The live progress line of long STAT_NON_LINE runs: on a terminal only, never in the .mess.
+  if (options.echo && isatty(STDOUT_FILENO) != 0) {
+    setProgressTerminal(&std::cout);
+  }
   options.commandLine = args.commandLine;
 
   std::filesystem::path target(args.target);
