@@ -1,14 +1,17 @@
-// NewtonDriver: prediction, residuals, corrections and the convergence table of one step.
+// NewtonDriver: prediction, residuals, corrections, line search and the convergence table of one
+// step.
 
 #include "solver/nonlinear/NewtonDriver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <limits>
 
 namespace stella {
 
 NewtonDriver::NewtonDriver(MechanicalSystem& system, NewtonSettings settings, std::ostream& log)
-    : system_(system), settings_(settings), log_(log) {}
+    : system_(system), settings_(std::move(settings)), log_(log) {}
 
 MechanicalState NewtonDriver::initialState(double time) const {
   MechanicalState s;
@@ -48,6 +51,7 @@ void NewtonDriver::factorizeMatrix(std::vector<Eigen::Triplet<double>>& triplets
     Diagnostic d = e.first();
     throw UserError(std::move(d).withNote(note));
   }
+  factorized_ = true;
 }
 
 Eigen::VectorXd NewtonDriver::constraintForces(const Eigen::VectorXd& u) {
@@ -56,6 +60,129 @@ Eigen::VectorXd NewtonDriver::constraintForces(const Eigen::VectorXd& u) {
     constraint_->addForces(u, forces, nullptr);
   }
   return forces;
+}
+
+AssemblyStatus NewtonDriver::residual(const MechanicalState& start, const Eigen::VectorXd& du,
+                                      const Eigen::VectorXd& lambda, const Eigen::VectorXd& fext,
+                                      behaviour::Option option, AssemblyOutput out, Eigen::VectorXd& r) {
+  const int n = system_.dofs().physicalCount();
+  Eigen::VectorXd local = Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd& fint = out.internalForces != nullptr ? *out.internalForces : local;
+  fint.setZero(n);
+  out.internalForces = &fint;
+  const AssemblyStatus status = system_.assembler().run(start.displacement, du, start.points, option, out);
+  r = fext - fint - system_.solver().transposeTimes(lambda) + constraintForces(start.displacement + du);
+  const auto& eliminated = system_.solver().eliminated();
+  for (int i = 0; i < n; ++i) {
+    if (eliminated[static_cast<std::size_t>(i)]) {
+      r(i) = 0.0;
+    }
+  }
+  return status;
+}
+
+bool NewtonDriver::predictionMatrixDue() const {
+  return !factorized_ || convergedSteps_ == 0 ||
+         (settings_.reacIncr > 0 && convergedSteps_ % settings_.reacIncr == 0);
+}
+
+std::string NewtonDriver::predict(const MechanicalState& start, double time, const Eigen::VectorXd& fext,
+                                  const Eigen::VectorXd& g, const Eigen::VectorXd& imposed,
+                                  Eigen::VectorXd& du, Eigen::VectorXd& lambda) {
+  const int n = system_.dofs().physicalCount();
+  const bool extrapolate =
+      settings_.prediction == Prediction::Extrapolated && lastIncrement_.size() == n && lastStepLength_ > 0.0;
+  const bool given = extrapolate || settings_.prediction == Prediction::Computed;
+  std::string matrixNote;
+  // The matrix of the prediction (and of the first corrections when REAC_ITER does not update
+  // it; a given increment needs none when the first correction reassembles the tangent).
+  if (!settings_.tangentMatrix) {
+    if (!elasticFactorized_) {
+      factorize(start, du, behaviour::Option::ElasticTangent, true);
+      elasticFactorized_ = true;
+      matrixNote = "ELASTIQUE";
+    }
+  } else if (predictionMatrixDue() && !(given && settings_.reacIter == 1)) {
+    const bool elastic = settings_.prediction == Prediction::Elastic;
+    factorize(start, du, elastic ? behaviour::Option::ElasticTangent : behaviour::Option::PredictionTangent,
+              true);
+    matrixNote = elastic ? "ELASTIQUE" : "TANGENTE";
+  }
+  if (given) {
+    // An increment given rather than solved for: the relations are restored by the first
+    // correction; the eliminated DOFs take their values now.
+    // The multipliers are part of the extrapolated increment (code_aster's LAGR DOFs of DEPL);
+    // a computed displacement has none: the first correction finds the reactions.
+    const double ratio = (time - start.time) / lastStepLength_;
+    du = extrapolate ? Eigen::VectorXd(lastIncrement_ * ratio)
+                     : Eigen::VectorXd(settings_.computedDisplacement(time) - start.displacement);
+    if (extrapolate && lastMultiplierIncrement_.size() == lambda.size()) {
+      lambda += ratio * lastMultiplierIncrement_;
+    }
+    const auto& eliminated = system_.solver().eliminated();
+    for (int i = 0; i < n; ++i) {
+      if (eliminated[static_cast<std::size_t>(i)]) {
+        du(i) = imposed(i) - start.displacement(i);
+      }
+    }
+    return matrixNote;
+  }
+  // Residual at the start of the step with the new loads, solved with the prediction matrix.
+  Eigen::VectorXd r;
+  residual(start, du, lambda, fext, behaviour::Option::ResidualOnly, {}, r);
+  const Eigen::VectorXd c = g - system_.solver().times(start.displacement);
+  const Eigen::VectorXd p = imposed - start.displacement;
+  Eigen::VectorXd ddu;
+  Eigen::VectorXd dl;
+  system_.solver().solve(r, c, p, ddu, dl);
+  if (constraint_ != nullptr) {
+    constraint_->correct(start.displacement, ddu, dl, system_.solver());
+  }
+  du += ddu;
+  lambda += dl;
+  return matrixNote;
+}
+
+double NewtonDriver::lineSearch(const MechanicalState& start, const Eigen::VectorXd& du,
+                                const Eigen::VectorXd& ddu, const Eigen::VectorXd& lambda,
+                                const Eigen::VectorXd& fext, const Eigen::VectorXd& r0, int& iterations) {
+  const LineSearchSettings& ls = settings_.lineSearch;
+  // f(rho) = r(u + du + rho ddu) . ddu vanishes where the energy is stationary along ddu;
+  // f(0) > 0 for a descent direction.
+  const double f0 = r0.dot(ddu);
+  if (!(f0 > 0.0) || ls.maxIterations <= 0) {
+    return 1.0;
+  }
+  double rhoPrevious = 0.0;
+  double fPrevious = f0;
+  double rho = 1.0;
+  double best = 1.0;
+  double bestF = std::numeric_limits<double>::infinity();
+  Eigen::VectorXd r;
+  for (int k = 0; k < ls.maxIterations; ++k) {
+    const Eigen::VectorXd trial = du + rho * ddu;
+    ++iterations;
+    if (!residual(start, trial, lambda, fext, behaviour::Option::ResidualOnly, {}, r).ok()) {
+      break; // the behaviour cannot integrate this far: keep the best length so far
+    }
+    const double f = r.dot(ddu);
+    if (std::fabs(f) < bestF) {
+      bestF = std::fabs(f);
+      best = rho;
+    }
+    if (std::fabs(f) <= ls.relativeResidual * f0 || f == fPrevious) {
+      break;
+    }
+    double next = rho - f * (rho - rhoPrevious) / (f - fPrevious);
+    next = std::clamp(next, ls.rhoMin, ls.rhoMax);
+    if (std::fabs(next) < ls.rhoExcluded) {
+      next = std::copysign(ls.rhoExcluded, next);
+    }
+    rhoPrevious = rho;
+    fPrevious = f;
+    rho = next;
+  }
+  return best;
 }
 
 StepOutcome NewtonDriver::step(const MechanicalState& start, double time, MechanicalState& end) {
@@ -70,46 +197,16 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
   if (constraint_ != nullptr) {
     constraint_->beginStep(start.displacement, time);
   }
+  // With RECH_LINEAIRE a column gives the length rho of the line search that led to the row.
+  const bool rhoColumn = settings_.lineSearch.enabled;
+  const std::string rule = std::string(78, '-') + (rhoColumn ? std::string(11, '-') : std::string());
   log_ << fmt::format("   INST {:<12g}\n", time);
-  log_ << "   ------------------------------------------------------------------------------\n";
-  log_ << "   | ITER | RESI_GLOB_RELA | RESI_GLOB_MAXI | WHERE (MAXI)            | MATRIX    |\n";
-  log_ << "   ------------------------------------------------------------------------------\n";
-  // Prediction.
-  std::string matrixNote;
-  if (!settings_.tangentMatrix || settings_.elasticPrediction) {
-    if (!elasticFactorized_ || settings_.tangentMatrix) {
-      factorize(start, du, behaviour::Option::ElasticTangent, true);
-      elasticFactorized_ = !settings_.tangentMatrix;
-      matrixNote = "ELASTIQUE";
-    }
-  } else {
-    factorize(start, du, behaviour::Option::PredictionTangent, true);
-    matrixNote = "TANGENTE";
-  }
-  {
-    // Residual at the start of the step with the new loads.
-    Eigen::VectorXd fint = Eigen::VectorXd::Zero(n);
-    end.points = start.points;
-    system_.assembler().run(start.displacement, du, start.points, behaviour::Option::ResidualOnly,
-                            {nullptr, &fint, nullptr});
-    Eigen::VectorXd r =
-        fext - fint - system_.solver().transposeTimes(lambda) + constraintForces(start.displacement);
-    for (int i = 0; i < n; ++i) {
-      if (eliminated[static_cast<std::size_t>(i)]) {
-        r(i) = 0.0;
-      }
-    }
-    Eigen::VectorXd c = g - system_.solver().times(start.displacement);
-    Eigen::VectorXd p = imposed - start.displacement;
-    Eigen::VectorXd ddu;
-    Eigen::VectorXd dl;
-    system_.solver().solve(r, c, p, ddu, dl);
-    if (constraint_ != nullptr) {
-      constraint_->correct(start.displacement, ddu, dl, system_.solver());
-    }
-    du += ddu;
-    lambda += dl;
-  }
+  log_ << "   " << rule << "\n";
+  log_ << "   | ITER | RESI_GLOB_RELA | RESI_GLOB_MAXI | WHERE (MAXI)            | MATRIX    |"
+       << (rhoColumn ? " RHO      |" : "") << "\n";
+  log_ << "   " << rule << "\n";
+  double rho = 1.0;
+  std::string matrixNote = predict(start, time, fext, g, imposed, du, lambda);
   // The geometric loop of a constraint extends the iteration budget by ITER_GLOB_MAXI per
   // re-pairing; the constraint bounds the number of re-pairings (ITER_GEOM_MAXI).
   int lastIteration = settings_.iterGlobMaxi;
@@ -117,11 +214,12 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
     const bool updateMatrix = settings_.tangentMatrix && settings_.reacIter > 0 && iter < lastIteration &&
                               ((iter + 1) % settings_.reacIter == 0);
     std::vector<Eigen::Triplet<double>> triplets;
-    Eigen::VectorXd fint = Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd fint;
     end.points = start.points;
     const behaviour::Option option = updateMatrix ? behaviour::Option::Full : behaviour::Option::ResidualOnly;
-    const auto status = system_.assembler().run(start.displacement, du, start.points, option,
-                                                {updateMatrix ? &triplets : nullptr, &fint, &end.points});
+    Eigen::VectorXd r;
+    const auto status = residual(start, du, lambda, fext, option,
+                                 {updateMatrix ? &triplets : nullptr, &fint, &end.points}, r);
     if (!status.ok()) {
       log_ << fmt::format("   | {:4d} | behaviour integration failed in cell {}\n", iter,
                           system_.model().mesh->cellName(*status.failedCell));
@@ -130,12 +228,10 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
     }
     const Eigen::VectorXd reactions = system_.solver().transposeTimes(lambda);
     const Eigen::VectorXd forces = constraintForces(start.displacement + du);
-    Eigen::VectorXd r = fext - fint - reactions + forces;
     Eigen::VectorXd reference = fext - reactions + forces;
     for (int i = 0; i < n; ++i) {
       if (eliminated[static_cast<std::size_t>(i)]) {
         reference(i) = fint(i);
-        r(i) = 0.0;
       }
     }
     Eigen::Index where = 0;
@@ -148,9 +244,10 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
     const std::string at =
         n > 0 ? system_.dofs().describe(static_cast<int>(where), *system_.model().mesh) : "-";
     const bool ok = (settings_.resiGlobRela <= 0.0 || rela <= settings_.resiGlobRela) &&
-                    (settings_.resiGlobMaxi <= 0.0 || maxi <= settings_.resiGlobMaxi);
-    log_ << fmt::format("   | {:4d} | {:14.6e} | {:14.6e} | {:<23} | {:<9} |{}\n", iter, rela, maxi,
+                    (settings_.resiGlobMaxi <= 0.0 || maxi <= settings_.resiGlobMaxi) && std::isfinite(maxi);
+    log_ << fmt::format("   | {:4d} | {:14.6e} | {:14.6e} | {:<23} | {:<9} |{}{}\n", iter, rela, maxi,
                         at.substr(0, 23), matrixNote,
+                        rhoColumn ? fmt::format(" {:<8.4g} |", rho) : std::string(),
                         constraint_ != nullptr ? " " + constraint_->iterationNote() : std::string());
     out.iterations = iter;
     out.resiRela = rela;
@@ -168,7 +265,11 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
       end.time = time;
       end.displacement = start.displacement + du;
       end.multipliers = lambda;
-      log_ << "   ------------------------------------------------------------------------------\n";
+      lastIncrement_ = du;
+      lastMultiplierIncrement_ = lambda - start.multipliers;
+      lastStepLength_ = time - start.time;
+      ++convergedSteps_;
+      log_ << "   " << rule << "\n";
       return out;
     }
     if (iter == lastIteration) {
@@ -186,10 +287,13 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
     if (constraint_ != nullptr) {
       constraint_->correct(start.displacement + du, ddu, dl, system_.solver());
     }
-    du += ddu;
-    lambda += dl;
+    rho = settings_.lineSearch.enabled
+              ? lineSearch(start, du, ddu, lambda + dl, fext, r, out.lineSearchIterations)
+              : 1.0;
+    du += rho * ddu;
+    lambda += rho * dl;
   }
-  log_ << "   ------------------------------------------------------------------------------\n";
+  log_ << "   " << rule << "\n";
   return out;
 }
 

@@ -1,28 +1,48 @@
 #pragma once
-// The Newton loop of STAT_NON_LINE over the instants of a list: for each step, a prediction
-// (tangent at the start of the step, or the elastic matrix), then corrections until the global
+// The Newton loop of STAT_NON_LINE for one step: a prediction (PREDICTION='TANGENTE' or
+// 'ELASTIQUE': a solve with the tangent at the start of the step or the elastic matrix;
+// 'EXTRAPOLE': the last step's increment scaled by the ratio of the step lengths; 'DEPL_CALCULE':
+// the displacement of a given result at the new time), then corrections until the global
 // residual criteria hold (RESI_GLOB_RELA relative to the external forces and reactions,
 // RESI_GLOB_MAXI absolute), printing code_aster's convergence table in the message file.
-// The tangent is reassembled every REAC_ITER iterations (MATRICE='TANGENTE') or never
-// (MATRICE='ELASTIQUE': the elastic matrix factorised once). Step cutting on failure is left to
-// the caller.
+// The tangent is reassembled every REAC_ITER iterations and, at the prediction, every REAC_INCR
+// steps (MATRICE='TANGENTE'), or never (MATRICE='ELASTIQUE': the elastic matrix factorised once).
+// With RECH_LINEAIRE each correction is scaled by the secant line search (CORDE). Step cutting on
+// failure is left to the caller (TimeStepper).
 
 #include "solver/nonlinear/MechanicalSystem.hpp"
 #include "solver/nonlinear/PointState.hpp"
 #include "solver/nonlinear/StepConstraint.hpp"
 
+#include <functional>
 #include <ostream>
 #include <string>
 
 namespace stella {
 
+// RECH_LINEAIRE METHODE='CORDE': secant iterations on the residual projected on the correction.
+struct LineSearchSettings {
+  bool enabled = false;
+  int maxIterations = 3;         // ITER_LINE_MAXI
+  double relativeResidual = 0.1; // RESI_LINE_RELA
+  double rhoMin = 0.01;          // RHO_MIN
+  double rhoMax = 10.0;          // RHO_MAX
+  double rhoExcluded = 0.009;    // RHO_EXCL
+};
+
+enum class Prediction { Tangent, Elastic, Extrapolated, Computed };
+
 struct NewtonSettings {
-  bool tangentMatrix = true;      // MATRICE='TANGENTE'
-  int reacIter = 1;               // REAC_ITER (0: only at the prediction)
-  bool elasticPrediction = false; // PREDICTION='ELASTIQUE'
-  double resiGlobRela = 1.0e-6;   // RESI_GLOB_RELA (<= 0: not used)
-  double resiGlobMaxi = -1.0;     // RESI_GLOB_MAXI (<= 0: not used)
-  int iterGlobMaxi = 10;          // ITER_GLOB_MAXI
+  bool tangentMatrix = true; // MATRICE='TANGENTE'
+  int reacIter = 1;          // REAC_ITER (0: only at the prediction)
+  int reacIncr = 1;          // REAC_INCR (0: the prediction matrix of the first step only)
+  Prediction prediction = Prediction::Tangent;
+  double resiGlobRela = 1.0e-6;  // RESI_GLOB_RELA (<= 0: not used)
+  double resiGlobMaxi = -1.0;    // RESI_GLOB_MAXI (<= 0: not used)
+  int iterGlobMaxi = 10;         // ITER_GLOB_MAXI (ITER_GLOB_ELAS with MATRICE='ELASTIQUE')
+  LineSearchSettings lineSearch; // RECH_LINEAIRE
+  // PREDICTION='DEPL_CALCULE': the displacement (physical size) of NEWTON/EVOL_NOLI at a time.
+  std::function<Eigen::VectorXd(double)> computedDisplacement;
 };
 
 // The converged state at a time.
@@ -37,6 +57,7 @@ struct StepOutcome {
   bool converged = false;
   bool integrationFailed = false; // a behaviour failed at a Gauss point
   int iterations = 0;
+  int lineSearchIterations = 0; // over the whole step
   double resiRela = 0.0;
   double resiMaxi = 0.0;
 };
@@ -53,7 +74,26 @@ public:
   // of it is called). Not owned.
   void setConstraint(StepConstraint* constraint) { constraint_ = constraint; }
 
+  // Converged steps so far (REAC_INCR counts them).
+  int convergedSteps() const { return convergedSteps_; }
+
 private:
+  // The prediction of a step: the increment `du` and multipliers `lambda`; returns the matrix
+  // note of the table ("TANGENTE", "ELASTIQUE" or "" when the factorisation is kept).
+  std::string predict(const MechanicalState& start, double time, const Eigen::VectorXd& fext,
+                      const Eigen::VectorXd& g, const Eigen::VectorXd& imposed, Eigen::VectorXd& du,
+                      Eigen::VectorXd& lambda);
+  // Whether the prediction reassembles its matrix (REAC_INCR).
+  bool predictionMatrixDue() const;
+  // Residual F_ext - F_int(u + du) - C^T lambda + constraint forces, zero on eliminated DOFs;
+  // `fint` receives F_int. Returns the behaviour's status.
+  AssemblyStatus residual(const MechanicalState& start, const Eigen::VectorXd& du,
+                          const Eigen::VectorXd& lambda, const Eigen::VectorXd& fext,
+                          behaviour::Option option, AssemblyOutput out, Eigen::VectorXd& r);
+  // RECH_LINEAIRE CORDE: the step length rho along `ddu` (1 without line search).
+  double lineSearch(const MechanicalState& start, const Eigen::VectorXd& du, const Eigen::VectorXd& ddu,
+                    const Eigen::VectorXd& lambda, const Eigen::VectorXd& fext, const Eigen::VectorXd& r0,
+                    int& iterations);
   void factorize(const MechanicalState& start, const Eigen::VectorXd& du, behaviour::Option option,
                  bool first);
   // Factorises K (+ the constraint's tangent terms), adding the constraint's note to a
@@ -70,6 +110,11 @@ private:
   bool elasticFactorized_ = false;
   bool checked_ = false;
   double forceScale_ = 0.0; // largest RESI_GLOB_RELA reference of the converged steps
+  int convergedSteps_ = 0;
+  bool factorized_ = false;
+  Eigen::VectorXd lastIncrement_; // of the last converged step (EXTRAPOLE)
+  Eigen::VectorXd lastMultiplierIncrement_;
+  double lastStepLength_ = 0.0;
 };
 
 } // namespace stella

@@ -1,18 +1,25 @@
 // STAT_NON_LINE: nonlinear quasi-static analysis by Newton over the instants of INCREMENT,
-// COMPORTEMENT ELAS / VMIS_ISOT_LINE per group, results DEPL, SIEF_ELGA, VARI_ELGA per step in an
-// evol_noli (NUME_ORDRE 0 = the initial state). A step that does not converge stops the run with
-// <S>_NO_CONVERGENCE, keeping every converged step. Step cutting (DEFI_LIST_INST ECHEC),
-// ETAT_INIT, ARCHIVAGE selections, contact and line search are refused as not implemented yet.
+// COMPORTEMENT ELAS / VMIS_ISOT_LINE per group, contact through CONTACT, results DEPL,
+// SIEF_ELGA, VARI_ELGA (and the contact fields) per stored step in an evol_noli (the initial
+// state first: NUME_ORDRE 0, or after the last step of a result continued with reuse=).
+// Steps that fail are cut as the DEFI_LIST_INST says (TimeStepper); ARCHIVAGE selects the
+// stored steps; ETAT_INIT / reuse= start from a stored step. A failure after every allowed cut
+// stops the run with <S>_NO_CONVERGENCE, keeping every stored step and the last converged one.
+// What the catalogue has and stella does not is refused by name (StatNonLineKeywords).
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/contact/ContactStepConstraint.hpp"
 #include "solver/database/Result.hpp"
-#include "solver/functions/InstantList.hpp"
+#include "solver/model/ElementCharacteristics.hpp"
 #include "solver/model/Selection.hpp"
+#include "solver/nonlinear/Archiving.hpp"
 #include "solver/nonlinear/CommandInputs.hpp"
 #include "solver/nonlinear/NewtonDriver.hpp"
+#include "solver/nonlinear/ProgressLine.hpp"
 #include "solver/nonlinear/ResultFields.hpp"
 #include "solver/nonlinear/ResultLoads.hpp"
+#include "solver/nonlinear/StatNonLineInputs.hpp"
+#include "solver/nonlinear/StatNonLineKeywords.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 
@@ -21,20 +28,6 @@
 namespace stella {
 
 namespace {
-
-void refuseAbsent(const KeywordTree& kw) {
-  for (const char* k : {"CARA_ELEM", "PILOTAGE", "ETAT_INIT", "RESULTAT"}) {
-    const FactorKeyword* f = kw.factor(k);
-    if ((f != nullptr && !f->defaulted) || (f == nullptr && kw.simple(k) != nullptr)) {
-      throw UserError(Diagnostic::fatal("SNL_1", fmt::format("STAT_NON_LINE {} is not implemented yet", k),
-                                        kw.locationOf(k)));
-    }
-  }
-  if (kw.has("RECH_LINEAIRE") && !kw.factor("RECH_LINEAIRE")->defaulted) {
-    throw UserError(Diagnostic::fatal("SNL_1", "STAT_NON_LINE RECH_LINEAIRE is not implemented yet",
-                                      kw.locationOf("RECH_LINEAIRE")));
-  }
-}
 
 std::vector<std::string> relationsOf(const KeywordTree& kw, const Model& model) {
   std::vector<std::string> relations(model.cells.size(), "ELAS");
@@ -54,123 +47,155 @@ std::vector<std::string> relationsOf(const KeywordTree& kw, const Model& model) 
   return relations;
 }
 
-std::vector<double> instantsOf(const KeywordTree& inc, std::shared_ptr<const InstantList>& policy) {
-  auto c = inc.conceptValue("LIST_INST");
-  std::vector<double> times;
-  if (auto l = conceptData<RealList>(c)) {
-    times = l->values;
-  } else if (auto li = conceptData<InstantList>(c)) {
-    times = li->instants;
-    policy = li;
-  }
-  const double start = inc.realOr("INST_INIT", times.empty() ? 0.0 : times.front());
-  const double end = inc.realOr("INST_FIN", times.empty() ? 0.0 : times.back());
-  const double eps = 1.0e-9 * std::max(1.0, std::fabs(end));
-  std::vector<double> out;
-  for (double t : times) {
-    if (t >= start - eps && t <= end + eps) {
-      out.push_back(t);
-    }
-  }
-  if (out.size() < 2) {
-    throw UserError(Diagnostic::fatal("SNL_2", "INCREMENT leaves fewer than two instants: no step to compute",
-                                      inc.location()));
-  }
-  return out;
-}
-
-NewtonSettings settingsOf(const KeywordTree& kw) {
-  NewtonSettings s;
-  if (kw.has("NEWTON")) {
-    const KeywordTree& nw = kw.occurrences("NEWTON").front();
-    s.tangentMatrix = nw.textOr("MATRICE", "TANGENTE") == "TANGENTE";
-    s.reacIter = static_cast<int>(nw.integerOr("REAC_ITER", 1));
-    const std::string prediction = nw.textOr("PREDICTION", s.tangentMatrix ? "TANGENTE" : "ELASTIQUE");
-    if (prediction != "TANGENTE" && prediction != "ELASTIQUE") {
-      throw UserError(Diagnostic::fatal("SNL_1",
-                                        fmt::format("PREDICTION='{}' is not implemented yet", prediction),
-                                        nw.locationOf("PREDICTION")));
-    }
-    s.elasticPrediction = prediction == "ELASTIQUE";
-  }
-  if (kw.has("CONVERGENCE")) {
-    const KeywordTree& cv = kw.occurrences("CONVERGENCE").front();
-    s.resiGlobRela = cv.realOr("RESI_GLOB_RELA", -1.0);
-    s.resiGlobMaxi = cv.realOr("RESI_GLOB_MAXI", -1.0);
-    s.iterGlobMaxi = static_cast<int>(cv.integerOr("ITER_GLOB_MAXI", 10));
-  }
-  return s;
-}
-
-void store(Result& result, const MechanicalState& s, const MechanicalSystem& system,
-           const StepConstraint* constraint) {
-  ResultStep& step = result.addStep(s.time, 0);
-  storeMechanicalFields(step, system.model(), system.dofs(), s.displacement, s.points, true, true);
-  if (constraint != nullptr) {
-    constraint->store(step);
-  }
-}
-
-Value runStatNonLine(OperatorCall& call) {
+// The result to fill: the reused one (steps from the first computed instant on are replaced,
+// as code_aster does) or a new one.
+std::shared_ptr<Result> resultFor(OperatorCall& call, const std::shared_ptr<const Model>& model,
+                                  const std::shared_ptr<const MaterialField>& materials,
+                                  double firstComputed) {
   const KeywordTree& kw = call.keywords;
-  refuseAbsent(kw);
-  auto model = readModel(kw);
-  auto materials = readMaterialField(kw, *model);
-  MechanicalSystem system(model, materials, readExcitations(kw), relationsOf(kw, *model), call.location);
-  system.solver().setOptions(readSolverOptions(kw));
-  std::shared_ptr<const InstantList> policy;
-  const auto times = instantsOf(kw.occurrences("INCREMENT").front(), policy);
-  NewtonSettings settings = settingsOf(kw);
-  auto& msg = call.session.message();
-  const std::unique_ptr<StepConstraint> constraint = makeContactConstraint(kw, system);
-  const bool linear = system.behaviours().allLinear();
-  msg << fmt::format(
-      "   effects: {}, {} load(s), {} {} factorisation, {} Lagrange multiplier(s), {}\n",
-      linear ? "elasticity (no return mapping)"
-             : fmt::format("{} (return mapping)", fmt::join(system.behaviours().relationNames(), ", ")),
-      system.excitations().size(), system.behaviours().allSymmetric() ? "symmetric" : "unsymmetric",
-      settings.tangentMatrix ? "tangent" : "elastic", system.relationCount(),
-      constraint != nullptr ? constraint->effects() : std::string("no contact"));
-  auto result = std::make_shared<Result>();
+  std::shared_ptr<Result> result = call.reused ? conceptData<Result>(call.reused) : nullptr;
+  if (!call.reused && kw.has("RESULTAT")) {
+    throw UserError(
+        Diagnostic::fatal("SNL_5", "RESULTAT= continues a result only with reuse=", kw.locationOf("RESULTAT"))
+            .withNote("write RES = STAT_NON_LINE(reuse=RES, RESULTAT=RES, ...)"));
+  }
+  if (result) {
+    if (result->mesh.get() != model->mesh.get()) {
+      throw UserError(
+          Diagnostic::fatal("SNL_5", "reuse=: the result is on another mesh than the model", call.location));
+    }
+    const double tolerance = 1.0e-9 * std::max(1.0, std::fabs(firstComputed));
+    std::erase_if(result->steps, [&](const ResultStep& s) { return s.time >= firstComputed - tolerance; });
+    return result;
+  }
+  result = std::make_shared<Result>();
   result->type = "evol_noli";
   result->mesh = model->mesh;
   result->model = std::const_pointer_cast<Model>(model);
   result->material = std::const_pointer_cast<MaterialField>(materials);
+  return result;
+}
+
+// Stores a state as the next step of the result (NUME_ORDRE 0 for the first), with the number
+// of Newton iterations as parameter ITER_GLOB.
+int store(Result& result, const MechanicalState& s, const MechanicalSystem& system,
+          const StepConstraint* constraint, int iterations = 0) {
+  ResultStep& step = result.addStep(s.time, 0);
+  step.parameters["ITER_GLOB"] = iterations;
+  storeMechanicalFields(step, system.model(), system.dofs(), s.displacement, s.points, true, true);
+  if (constraint != nullptr) {
+    constraint->store(step);
+  }
+  return step.number;
+}
+
+std::string effectsLine(const MechanicalSystem& system, const NewtonSettings& settings,
+                        const StepConstraint* constraint, const CutPolicy& cuts) {
+  const bool linear = system.behaviours().allLinear();
+  return fmt::format(
+      "   effects: {}, {} load(s), {} {} factorisation, {} Lagrange multiplier(s), {}{}, step cutting {}\n",
+      linear ? "elasticity (no return mapping)"
+             : fmt::format("{} (return mapping)", fmt::join(system.behaviours().relationNames(), ", ")),
+      system.excitations().size(), system.behaviours().allSymmetric() ? "symmetric" : "unsymmetric",
+      settings.tangentMatrix ? "tangent" : "elastic", system.relationCount(),
+      constraint != nullptr ? constraint->effects() : std::string("no contact"),
+      settings.lineSearch.enabled ? ", line search CORDE" : "",
+      cuts.subdivide ? fmt::format("SUBD_PAS={} SUBD_NIVEAU={}", cuts.subdivisions, cuts.maxLevel)
+                     : std::string("off (ARRET)"));
+}
+
+Value runStatNonLine(OperatorCall& call) {
+  const KeywordTree& kw = call.keywords;
+  refuseUnsupportedKeywords(kw);
+  auto model = readModel(kw);
+  auto materials = readMaterialField(kw, *model);
+  MechanicalSystem system(model, materials, readExcitations(kw), relationsOf(kw, *model), call.location,
+                          readCaraElem(kw));
+  system.solver().setOptions(readSolverOptions(kw));
+  auto reusedResult = call.reused ? conceptData<Result>(call.reused) : nullptr;
+  const auto initialStep = readInitialStep(kw, reusedResult);
+  std::shared_ptr<const InstantList> list;
+  const auto times =
+      readInstants(kw.occurrences("INCREMENT").front(),
+                   initialStep ? std::optional<double>(initialStep->step->time) : std::nullopt, list);
+  const CutPolicy cuts = readCutPolicy(list.get());
+  const ArchiveSelection archive = ArchiveSelection::read(kw);
+  const NewtonSettings settings = readNewtonSettings(kw, system);
+  auto& msg = call.session.message();
   NewtonDriver driver(system, settings, msg);
+  const std::unique_ptr<StepConstraint> constraint = makeContactConstraint(kw, system);
   driver.setConstraint(constraint.get());
+  msg << effectsLine(system, settings, constraint.get(), cuts);
+
   MechanicalState state = driver.initialState(times.front());
-  store(*result, state, system, constraint.get());
+  if (initialStep) {
+    state = stateFromResultStep(*initialStep, system, state, call.location);
+    state.time = times.front();
+    msg << fmt::format("   initial state: NUME_ORDRE {} of the result at INST {:g}\n",
+                       initialStep->step->number, initialStep->step->time);
+  }
+  auto result = resultFor(call, model, materials, times[1]);
+  if (result->steps.empty() ||
+      result->steps.back().time < state.time - 1.0e-9 * std::max(1.0, std::fabs(state.time))) {
+    store(*result, state, system, constraint.get());
+  }
   rememberLoads(result, system.excitations());
   Value made = call.makeConcept(result);
-  for (std::size_t i = 1; i < times.size(); ++i) {
-    MechanicalState next;
-    const StepOutcome o = driver.step(state, times[i], next);
-    if (!o.converged) {
-      const std::string kept = fmt::format("{}: {} converged step(s) kept, up to INST {}", call.resultName,
-                                           result->steps.size() - 1, state.time);
-      call.session.noteKeptResult(kept);
-      throw UserError(
-          Diagnostic::noConvergence(
-              "SNL_3",
-              fmt::format("Newton did not converge at INST {} ({}; RESI_GLOB_RELA = {:.3e} after {} "
-                          "iterations); {}",
-                          times[i],
-                          o.integrationFailed ? "the behaviour integration failed" : "residual too large",
-                          o.resiRela, o.iterations, kept),
-              call.location)
-              .withNote("step cutting (DEFI_LIST_INST ECHEC) is not implemented yet: refine the list of "
-                        "instants, or raise ITER_GLOB_MAXI"));
+
+  ProgressLine progress(times.front(), times.back());
+  TimeStepper stepper(cuts, msg);
+  stepper.onAttempt([&](double, double) { progress.erase(); });
+  bool lastStored = true;
+  const SteppingResult run = stepper.run(
+      state, times,
+      [&](const MechanicalState& s, double t, MechanicalState& e) { return driver.step(s, t, e); },
+      [&](const MechanicalState& s, const ConvergedStep& c) {
+        if (constraint != nullptr) {
+          constraint->reportStep(msg);
+        }
+        lastStored = c.last || archive.selects(c.index, c.time);
+        const std::string stored =
+            lastStored ? fmt::format("stored as NUME_ORDRE {}",
+                                     store(*result, s, system, constraint.get(), c.outcome.iterations))
+                       : std::string("not stored (ARCHIVAGE)");
+        msg << fmt::format(
+            "   step {} INST {:g}{}: converged in {} iteration(s), RESI_GLOB_RELA = {:.3e}{}, {}\n", c.index,
+            c.time, c.level > 0 ? fmt::format(" (sub-step, level {})", c.level) : "", c.outcome.iterations,
+            c.outcome.resiRela,
+            c.outcome.lineSearchIterations > 0
+                ? fmt::format(", {} line search iteration(s)", c.outcome.lineSearchIterations)
+                : "",
+            stored);
+        msg.flush();
+        progress.show(c.time, c.index, c.cuts);
+      });
+  progress.erase();
+  msg << fmt::format("   linear solver: {}, {} factorisation(s); {} step(s) computed, {} cut(s)\n",
+                     system.solver().backendName(), system.solver().factorizations(), run.computedSteps,
+                     run.cuts);
+  if (!run.completed) {
+    if (!lastStored) {
+      store(*result, state, system, constraint.get());
     }
-    state = std::move(next);
-    if (constraint != nullptr) {
-      constraint->reportStep(msg);
-    }
-    store(*result, state, system, constraint.get());
-    msg << fmt::format("   step {} INST {} converged in {} iteration(s), RESI_GLOB_RELA = {:.3e}\n", i,
-                       times[i], o.iterations, o.resiRela);
+    const std::string kept =
+        fmt::format("{}: {} converged step(s) computed, {} stored, up to INST {:g}", call.resultName,
+                    run.computedSteps, static_cast<int>(result->steps.size()), state.time);
+    call.session.noteKeptResult(kept);
+    const SteppingFailure& f = run.failure;
+    throw UserError(
+        Diagnostic::noConvergence(
+            "SNL_3",
+            fmt::format("no convergence from INST {:g} to INST {:g} ({}; RESI_GLOB_RELA = {:.3e} after {} "
+                        "iterations) after {} cut(s); {}",
+                        f.startTime, f.time,
+                        f.outcome.integrationFailed ? "the behaviour integration failed"
+                                                    : "residual too large",
+                        f.outcome.resiRela, f.outcome.iterations, run.cuts, kept),
+            call.location)
+            .withNote(fmt::format("no further cut: {}; refine the list of instants, allow more cuts "
+                                  "(DEFI_LIST_INST ECHEC SUBD_NIVEAU), or raise ITER_GLOB_MAXI",
+                                  f.reason)));
   }
-  msg << fmt::format("   linear solver: {}, {} factorisation(s)\n", system.solver().backendName(),
-                     system.solver().factorizations());
   return made;
 }
 
