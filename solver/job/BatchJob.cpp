@@ -234,7 +234,8 @@ JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
   } else {
     counts.failure = FailureKind::Abort;
   }
-  JobDiagnostic diagnostic = diagnose(counts, spec.isTestcase);
+  // --reference-only judges the file by its reference lines: none counted is NO_TEST_RESU.
+  JobDiagnostic diagnostic = diagnose(counts, spec.isTestcase || options.referenceOnly);
   diagnostic = applyExpected(diagnostic, spec.expectedDiagnostics);
   job.diagnostic = diagnostic;
 
