@@ -83,5 +83,126 @@ check "quick run of a .comm: exit 0" test $code -eq 0
 "$stella" run ok.comm --unit 20 >out.txt 2>err.txt; code=$?
 check "bad --unit: usage exit 64" test $code -eq 64
 
+# --reference-only: VALE_CALC (non-regression) lines are printed with their difference but not
+# counted; only the reference lines decide OK / NOOK, and a file without any is NO_TEST_RESU.
+cat > refonly.comm <<'COMM'
+DEBUT()
+T = CREA_TABLE(LISTE=(_F(PARA='INST', LISTE_R=(0.5, 1.0)), _F(PARA='DY', LISTE_R=(-1.0, -2.0))))
+TEST_TABLE(TABLE=T, NOM_PARA='DY', TYPE_TEST='MIN', VALE_CALC=-2.1,
+           REFERENCE='ANALYTIQUE', VALE_REFE=-2.0, PRECISION=1.0e-6)
+FIN()
+COMM
+printf 'F comm refonly.comm D 1\nF mess results/refonly.mess R 6\nF resu results/refonly.resu R 8\n' > refonly.export
+"$stella" run refonly.export --quiet >out.txt 2>err.txt; code=$?
+check "wrong VALE_CALC, right reference: NOOK_TEST_RESU without --reference-only" grep -q -- "--- DIAGNOSTIC JOB : NOOK_TEST_RESU" results/refonly.mess
+"$stella" run --reference-only refonly.export --quiet >out.txt 2>err.txt; code=$?
+check "--reference-only: OK when the reference lines pass" grep -q -- "--- DIAGNOSTIC JOB : OK" results/refonly.mess
+check "--reference-only: exit 0" test $code -eq 0
+check "--reference-only: non-regression line printed with its difference, not judged" grep -qE "^ -   NON_REGRESSION   DY +-2.1 +-2.0 +4.8%" results/refonly.resu
+check "--reference-only: reference line judged" grep -q "^ OK  ANALYTIQUE" results/refonly.resu
+sed 's/,$/)/; /REFERENCE=/d' refonly.comm > calconly.comm
+printf 'F comm calconly.comm D 1\nF mess results/calconly.mess R 6\n' > calconly.export
+"$stella" run --reference-only calconly.export --quiet >out.txt 2>err.txt; code=$?
+check "--reference-only without reference lines: NO_TEST_RESU" grep -q -- "--- DIAGNOSTIC JOB : NO_TEST_RESU" results/calconly.mess
+
+# Post-processing on a plane-strain bar of two QUAD4 pulled by a pressure of -100 on its right
+# edge: uniform SIXX = 100, SIZZ = nu SIXX = 30, VMIS = sqrt(7900), EPXX = (1 - nu^2) 100 / E.
+cat > bar.mail <<'MAIL'
+TITRE
+ bar of two QUAD4
+FINSF
+%
+COOR_2D
+N1 0 0
+N2 1 0
+N3 2 0
+N4 0 1
+N5 1 1
+N6 2 1
+FINSF
+%
+QUAD4
+M1 N1 N2 N5 N4
+M2 N2 N3 N6 N5
+FINSF
+%
+SEG2
+M3 N3 N6
+FINSF
+%
+GROUP_MA
+RIGHT
+  M3
+FINSF
+%
+GROUP_NO
+LEFT
+  N1
+  N4
+FINSF
+%
+GROUP_NO
+BOTTOM
+  N1
+FINSF
+%
+GROUP_NO
+TOP
+  N4
+  N5
+  N6
+FINSF
+%
+FIN
+MAIL
+cat > post.comm <<'COMM'
+DEBUT()
+MA = LIRE_MAILLAGE(FORMAT='ASTER', UNITE=20)
+MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='D_PLAN'))
+ACIER = DEFI_MATERIAU(ELAS=_F(E=200000.0, NU=0.3))
+CM = AFFE_MATERIAU(MAILLAGE=MA, AFFE=_F(TOUT='OUI', MATER=ACIER))
+CH = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=(_F(GROUP_NO='LEFT', DX=0.0), _F(GROUP_NO='BOTTOM', DY=0.0)),
+                    PRES_REP=_F(GROUP_MA='RIGHT', PRES=-100.0))
+RES = MECA_STATIQUE(MODELE=MO, CHAM_MATER=CM, EXCIT=_F(CHARGE=CH))
+RES = CALC_CHAMP(reuse=RES, RESULTAT=RES, CONTRAINTE=('SIEF_ELNO', 'SIEF_NOEU'),
+                 DEFORMATION='EPSI_NOEU', CRITERES='SIEQ_NOEU')
+TEST_RESU(RESU=(
+    _F(RESULTAT=RES, NUME_ORDRE=1, NOM_CHAM='SIEF_ELNO', MAILLE='M2', NOEUD='N6', NOM_CMP='SIXX',
+       VALE_CALC=100.0, REFERENCE='ANALYTIQUE', VALE_REFE=100.0, PRECISION=1.0e-10),
+    _F(RESULTAT=RES, NUME_ORDRE=1, NOM_CHAM='SIEF_NOEU', NOEUD='N5', NOM_CMP='SIZZ',
+       VALE_CALC=30.0, REFERENCE='ANALYTIQUE', VALE_REFE=30.0, PRECISION=1.0e-10),
+    _F(RESULTAT=RES, NUME_ORDRE=1, NOM_CHAM='SIEQ_NOEU', NOEUD='N5', NOM_CMP='VMIS',
+       VALE_CALC=88.88194417315589, REFERENCE='ANALYTIQUE', VALE_REFE=88.88194417315589, PRECISION=1.0e-10),
+    _F(RESULTAT=RES, NUME_ORDRE=1, NOM_CHAM='SIEQ_NOEU', NOM_CMP='TRESCA', TYPE_TEST='MAX',
+       VALE_CALC=100.0, REFERENCE='ANALYTIQUE', VALE_REFE=100.0, PRECISION=1.0e-10),
+    _F(RESULTAT=RES, NUME_ORDRE=1, NOM_CHAM='EPSI_NOEU', NOEUD='N6', NOM_CMP='EPXX',
+       VALE_CALC=4.55e-4, REFERENCE='ANALYTIQUE', VALE_REFE=4.55e-4, PRECISION=1.0e-10),
+))
+TAB = POST_RELEVE_T(ACTION=(
+    _F(OPERATION='MOYENNE', INTITULE='top', RESULTAT=RES, NOM_CHAM='DEPL', GROUP_NO='TOP', NOM_CMP='DX'),
+    _F(OPERATION='EXTRACTION', INTITULE='invariants', RESULTAT=RES, NOM_CHAM='SIEF_NOEU', NOEUD='N5',
+       INVARIANT='OUI')))
+TEST_TABLE(TABLE=TAB, NOM_PARA='DX', FILTRE=(_F(NOM_PARA='INTITULE', VALE_K='top'),
+           _F(NOM_PARA='QUANTITE', VALE_K='MOMENT_0')),
+           VALE_CALC=4.55e-4, REFERENCE='ANALYTIQUE', VALE_REFE=4.55e-4, PRECISION=1.0e-10)
+TEST_TABLE(TABLE=TAB, NOM_PARA='VMIS', FILTRE=_F(NOM_PARA='INTITULE', VALE_K='invariants'),
+           VALE_CALC=88.88194417315589, REFERENCE='ANALYTIQUE', VALE_REFE=88.88194417315589, PRECISION=1.0e-10)
+IMPR_TABLE(TABLE=TAB, FORMAT='ASTER')
+IMPR_TABLE(TABLE=TAB, UNITE=30, SEPARATEUR=',', NOM_PARA=('INTITULE', 'QUANTITE', 'DX'))
+FIN()
+COMM
+printf 'F comm post.comm D 1\nF mail bar.mail D 20\nF mess results/post.mess R 6\nF resu results/post.resu R 8\nF csv results/post.csv R 30\n' > post.export
+"$stella" run post.export --quiet >out.txt 2>err.txt; code=$?
+check "CALC_CHAMP / POST_RELEVE_T study: OK" grep -q -- "--- DIAGNOSTIC JOB : OK" results/post.mess
+check "CALC_CHAMP / POST_RELEVE_T study: 14 OK lines" test "$(grep -c '^ OK ' results/post.resu)" -eq 14
+check "CALC_CHAMP: says what it stored" grep -q "CALC_CHAMP: SIEF_ELNO, SIEF_NOEU, EPSI_NOEU, SIEQ_NOEU stored on 1 step(s) of RES" results/post.mess
+check "ELNO test header names the cell and the node" grep -qE "^ +RES +1 +SIEF_ELNO +SIXX +M2 +N6" results/post.resu
+check "IMPR_TABLE ASTER: markers and type line" grep -q "^#FIN_TABLE" results/post.resu
+check "IMPR_TABLE CSV to unit 30" grep -q "^top,MOMENT_0,4.55000E-04" results/post.csv
+sed "s/CONTRAINTE=('SIEF_ELNO', 'SIEF_NOEU'),/CONTRAINTE='EFGE_ELNO',/" post.comm > refused.comm
+printf 'F comm refused.comm D 1\nF mail bar.mail D 20\nF mess results/refused.mess R 6\n' > refused.export
+"$stella" run refused.export --quiet >out.txt 2>err.txt; code=$?
+check "CALC_CHAMP option not implemented: refused by name" grep -q "CALC_CHAMP CONTRAINTE='EFGE_ELNO' is not implemented yet" results/refused.mess
+
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]
