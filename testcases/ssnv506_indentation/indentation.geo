@@ -4,11 +4,11 @@
 // Groups: MASSIF, SPHERE (surfaces); S_CONT (sphere's lower arc, master), M_CONT (massif top,
 // r <= 600, slave), M_TOP_FAR (rest of the massif top), S_TOP (sphere arc r <= 250, driven),
 // M_BASE (z = -1920), AXE (both bodies' r = 0 edges), S_SIDE (other sphere arc), M_SIDE (r = 1620).
-// Options: H (cell size at the contact), ORDER (1: QUAD4, 2: QUAD8), SECTOR (> 0: the 3D quarter
+// Options: H (cell size at the contact), ORDER (1: QUAD4, 2: QUAD8), QUADS (0: triangles), SECTOR (> 0: the 3D quarter
 // model, the section revolved by 90 degrees about the y axis in SECTOR layers; HEXA8 and PENTA6
 // next to the axis). 3D groups: MASSIF, SPHERE (volumes), S_CONT, M_CONT (faces), S_TOP, M_BASE
 // (faces), SYM_Z (the section z = 0), SYM_X (the revolved section x = 0).
-DefineConstant[H = 12, ORDER = 1, SECTOR = 0];
+DefineConstant[H = 12, ORDER = 1, SECTOR = 0, QUADS = 1];
 R = 500; L = 1620; D = 1920; RC = 600;
 // Massif
 Point(1) = {0, 0, 0, H}; Point(2) = {RC, 0, 0, 1.6 * H}; Point(3) = {L, 0, 0, 12 * H};
@@ -23,7 +23,10 @@ Point(10) = {0, R + EPS, 0, 6 * H}; Point(11) = {0, EPS, 0, H}; Point(12) = {R, 
 Point(13) = {250, R + EPS + Sqrt(R * R - 250 * 250), 0, 5 * H}; Point(14) = {0, 2 * R + EPS, 0, 5 * H};
 Circle(10) = {11, 10, 12}; Circle(11) = {12, 10, 13}; Circle(12) = {13, 10, 14}; Line(13) = {14, 11};
 Curve Loop(2) = {10, 11, 12, 13}; Plane Surface(2) = {2};
-Mesh.Algorithm = 6; Recombine Surface{1, 2};
+Mesh.Algorithm = 6;
+If (QUADS)
+  Recombine Surface{1, 2};
+EndIf
 Mesh.RecombinationAlgorithm = 1;
 Mesh.ElementOrder = ORDER; Mesh.SecondOrderIncomplete = 1;
 If (SECTOR == 0)
