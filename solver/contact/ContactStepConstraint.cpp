@@ -147,11 +147,13 @@ std::unique_ptr<StepConstraint> makeContactConstraint(const KeywordTree& statNon
                           .withNote("RESI_ABSO is in the mesh's length unit; start with 1e-3 times the mean "
                                     "interpenetration measured without contact (notice §3.2.1.3, §4.8)"));
     }
-    if (policy && policy->action == FailurePolicy::Action::AdaptPenalty) {
-      notImplemented(fmt::format("DEFI_LIST_INST ACTION='ADAPT_COEF_PENA' with ALGO_CONT='{}' (it adapts E_N "
-                                 "of ALGO_CONT='PENALISATION')",
-                                 contact::algorithmName(*algorithm)),
-                     at, "use ALGO_CONT='PENALISATION', or remove the INTERPENETRATION event");
+    if (policy) {
+      notImplemented(
+          fmt::format("DEFI_LIST_INST EVENEMENT='INTERPENETRATION' (ACTION='{}') with ALGO_CONT='{}' "
+                      "(it acts on ALGO_CONT='PENALISATION')",
+                      policy->action == FailurePolicy::Action::AdaptPenalty ? "ADAPT_COEF_PENA" : "ARRET",
+                      contact::algorithmName(*algorithm)),
+          at, "use ALGO_CONT='PENALISATION', or remove the INTERPENETRATION event");
     }
     c = std::make_unique<contact::DualContactConstraint>(def, system.dofs(), *algorithm);
   }
