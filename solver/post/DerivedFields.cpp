@@ -147,7 +147,14 @@ Field strainAtGaussPoints(const Model& model, const Field& depl, const MaterialF
     }
     const auto cell = static_cast<CellId>(c);
     const fem::Modelling modelling = model.cell(cell).modelling;
-    fem::computeKinematics(mesh.cellType(cell), modelling, coordinates(mesh, cell, dim), kin);
+    try {
+      fem::computeKinematics(mesh.cellType(cell), modelling, coordinates(mesh, cell, dim), kin);
+    } catch (const fem::DegenerateElementError& e) {
+      throw UserError(
+          Diagnostic::fatal("CALC_8", fmt::format("cell {} has a non-positive Jacobian ({}) at its "
+                                                  "Gauss point {}: its strain cannot be computed",
+                                                  mesh.cellName(cell), e.jacobian(), e.gaussPoint() + 1)));
+    }
     const auto nodes = mesh.cellNodes(cell);
     u.resize(static_cast<Eigen::Index>(nodes.size()) * dim);
     for (std::size_t i = 0; i < nodes.size(); ++i) {
