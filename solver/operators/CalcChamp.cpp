@@ -199,8 +199,10 @@ private:
     if (name == "SIEF_ELGA" || name == "SIGM_ELGA") {
       return restrictToCells(source("SIEF_ELGA", forOption), cells_);
     }
-    if (name == "SIEF_ELNO" || name == "SIGM_ELNO") {
-      return extrapolateToCellNodes(model_, source("SIEF_ELGA", forOption), cells_);
+    if (name == "SIEF_ELNO" || name == "SIGM_ELNO") { // the same values for solids: extrapolate once
+      const auto twin = cache_.find(name == "SIEF_ELNO" ? "SIGM_ELNO" : "SIEF_ELNO");
+      return twin != cache_.end() ? *twin->second
+                                  : extrapolateToCellNodes(model_, source("SIEF_ELGA", forOption), cells_);
     }
     if (name == "EPSI_ELGA") {
       return strainAtGaussPoints(model_, source("DEPL", forOption), materials_, cells_);
