@@ -80,6 +80,44 @@ void PenaltyContactConstraint::paired() {
   updateParameters();
 }
 
+namespace {
+
+// Zero entries for the blocks a link couples (its A row, and its T rows with friction).
+void addZeroOuter(std::vector<Eigen::Triplet<double>>& t, const SparseRows& ra, Eigen::Index a,
+                  const SparseRows& rb, Eigen::Index b) {
+  for (SparseRows::InnerIterator i(ra, a); i; ++i) {
+    for (SparseRows::InnerIterator j(rb, b); j; ++j) {
+      t.emplace_back(static_cast<int>(i.col()), static_cast<int>(j.col()), 0.0);
+    }
+  }
+}
+
+} // namespace
+
+void PenaltyContactConstraint::addPatternOfOpenLinks(const PenaltyEvaluation& e,
+                                                     std::vector<Eigen::Triplet<double>>& tangent) const {
+  // The matrix keeps the same sparsity pattern while the pairing does not change, whichever
+  // links are open: the linear solver's analysis is reused instead of redone at every change of
+  // contact status.
+  for (std::size_t i = 0; i < e.status.size(); ++i) {
+    const auto row = static_cast<Eigen::Index>(i);
+    if (e.status[i] != LinkStatus::Open) {
+      continue;
+    }
+    addZeroOuter(tangent, rows_.problem.A, row, rows_.problem.A, row);
+    if (friction_) {
+      addZeroOuter(tangent, rows_.friction.T1, row, rows_.friction.T1, row);
+      addZeroOuter(tangent, rows_.friction.T1, row, rows_.problem.A, row);
+      if (rows_.friction.T2.rows() > 0) {
+        addZeroOuter(tangent, rows_.friction.T2, row, rows_.friction.T2, row);
+        addZeroOuter(tangent, rows_.friction.T1, row, rows_.friction.T2, row);
+        addZeroOuter(tangent, rows_.friction.T2, row, rows_.friction.T1, row);
+        addZeroOuter(tangent, rows_.friction.T2, row, rows_.problem.A, row);
+      }
+    }
+  }
+}
+
 PenaltyEvaluation PenaltyContactConstraint::evaluate(const Eigen::VectorXd& u) const {
   return evaluatePenalty(rows_.problem, friction_ ? &rows_.friction : nullptr, parameters_, u - uPairing_);
 }
@@ -93,6 +131,7 @@ void PenaltyContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::Vector
   forces += e.force;
   if (tangent != nullptr) {
     tangent->insert(tangent->end(), e.tangent.begin(), e.tangent.end());
+    addPatternOfOpenLinks(e, *tangent);
     symmetric_ = e.symmetric;
   }
   noteActive_ = e.activeLinks;

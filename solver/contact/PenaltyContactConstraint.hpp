@@ -43,6 +43,7 @@ protected:
 private:
   PenaltyEvaluation evaluate(const Eigen::VectorXd& u) const;
   void updateParameters();
+  void addPatternOfOpenLinks(const PenaltyEvaluation& e, std::vector<Eigen::Triplet<double>>& tangent) const;
 
   bool friction_ = false;
   std::optional<FailurePolicy> policy_;
