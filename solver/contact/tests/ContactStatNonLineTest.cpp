@@ -339,5 +339,20 @@ TEST(ContactStatNonLine, ControlledGeometricLoopPairsExactlyNbIterGeomTimes) {
   EXPECT_EQ(r.message.find("contact: 2 geometric iteration(s)"), std::string::npos);
 }
 
+TEST(ContactStatNonLine, InterpenetrationEventWithADualAlgorithmIsRefusedByName) {
+  Blocks b;
+  std::string comm = b.comm();
+  const std::string list = "L = DEFI_LIST_REEL(VALE=(0.0, 0.1, 0.2, 0.3, 0.5, 1.0))\n";
+  comm.replace(comm.find(list), list.size(),
+               "LR = DEFI_LIST_REEL(VALE=(0.0, 0.1, 0.2, 0.3, 0.5, 1.0))\n"
+               "L = DEFI_LIST_INST(DEFI_LIST=_F(LIST_INST=LR), ECHEC=_F(EVENEMENT='INTERPENETRATION', "
+               "PENE_MAXI=1.0e-6, ACTION='ARRET'))\n");
+  const StudyRun r = runStudy("blocks_interpenetration", b.mesh(2), comm);
+  EXPECT_EQ(r.diagnostic, JobDiagnostic::Error);
+  EXPECT_NE(r.message.find("CONTACT_20"), std::string::npos);
+  EXPECT_NE(r.message.find("EVENEMENT='INTERPENETRATION' (ACTION='ARRET') with ALGO_CONT='CONTRAINTE'"),
+            std::string::npos);
+}
+
 } // namespace
 } // namespace stella::contact
