@@ -112,8 +112,8 @@ CSTR
         **hertz_errors(abs(force[1]), x, p))
 
 
-def ccx_block(work):
-    mesh = Mesh(block_mesh(work, 23, 24))
+def ccx_block(work, nb=23, nh=24):
+    mesh = Mesh(block_mesh(work, nb, nh))
     body = ccx_contact("CSLAVE", "CMASTER") + f"""*BOUNDARY
 SYM_X, 1, 1, 0.
 SYM_Y, 2, 2, 0.
@@ -131,7 +131,7 @@ U
 CSTR
 *END STEP
 """
-    d = work / "ccx_block3d"
+    d = work / f"ccx_block_{nb}_{nh}"
     d.mkdir(exist_ok=True)
     write_deck(mesh, d / "block.inp", ["BAS", "HAUT"], {"BAS": (E, NU), "HAUT": (E, NU)},
                ["SYM_X", "SYM_Y", "BAS_Z0", "HAUT_Z1", "HAUT_BAS"], {"CSLAVE": "HAUT_BAS", "CMASTER": "BAS_HAUT"},
