@@ -254,11 +254,13 @@ std::vector<std::filesystem::path> writeVtuResult(const std::filesystem::path& p
   std::vector<std::filesystem::path> written;
   const auto selected = steps(result, output);
   const auto names = fields(result, output);
-  const auto stem = pvdFile.stem().string();
+  // study.pvd -> study_<k>.vtu; a unit's file fort.81 -> fort.81_<k>.vtu (the batch runner copies
+  // them back with the unit's result).
+  const auto stem = pvdFile.extension() == ".pvd" ? pvdFile.stem().string() : pvdFile.filename().string();
   const auto dir = pvdFile.parent_path();
   std::string collection;
   if (selected.empty()) {
-    const auto vtu = dir / (stem + ".vtu");
+    const auto vtu = dir / (stem + "_mesh.vtu");
     writeVtu(vtu, mesh, nullptr, names, output);
     written.push_back(vtu);
     collection += "    <DataSet timestep=\"0\" file=\"" + vtu.filename().string() + "\"/>\n";

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <map>
 #include <unistd.h>
 
@@ -113,6 +114,40 @@ void writeTimingSummary(std::ostream& mess, const Session& session) {
 }
 
 // Copies the result units back; returns the files written.
+// Files a writer puts beside a unit (the .vtu of each step next to the .pvd of unit 81 are
+// fort.81_<k>.vtu): copied next to the result as <result stem>_<k>.vtu, and the unit's file, which
+// names them, rewritten to match.
+void copyCompanions(const fs::path& work, int unit, const fs::path& destination,
+                    std::vector<fs::path>& written) {
+  const std::string prefix = fmt::format("fort.{}_", unit);
+  const std::string stem = destination.stem().string() + "_";
+  bool any = false;
+  for (const auto& entry : fs::directory_iterator(work)) {
+    const std::string name = entry.path().filename().string();
+    if (!entry.is_regular_file() || name.rfind(prefix, 0) != 0) {
+      continue;
+    }
+    const fs::path target = destination.parent_path() / (stem + name.substr(prefix.size()));
+    fs::copy_file(entry.path(), target, fs::copy_options::overwrite_existing);
+    written.push_back(target);
+    any = true;
+  }
+  if (!any) {
+    return;
+  }
+  std::string text;
+  {
+    std::ifstream in(destination, std::ios::binary);
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const std::string quotedPrefix = "\"" + prefix;
+  for (std::size_t at = text.find(quotedPrefix); at != std::string::npos; at = text.find(quotedPrefix, at)) {
+    text.replace(at + 1, prefix.size(), stem);
+    at += 1 + stem.size();
+  }
+  std::ofstream(destination, std::ios::binary) << text;
+}
+
 std::vector<fs::path> copyResults(const JobSpec& spec, const fs::path& work, std::ostream& mess) {
   std::vector<fs::path> written;
   for (const auto& [unit, destination] : spec.results) {
@@ -130,6 +165,7 @@ std::vector<fs::path> copyResults(const JobSpec& spec, const fs::path& work, std
     fs::create_directories(destination.parent_path());
     fs::copy_file(produced, destination, fs::copy_options::overwrite_existing);
     written.push_back(destination);
+    copyCompanions(work, unit, destination, written);
   }
   return written;
 }
@@ -305,6 +341,7 @@ JobResult runCommandFile(const fs::path& commandFile, const std::map<int, fs::pa
   spec.results[6] = outputBase / (stem + ".mess");
   spec.results[8] = outputBase / (stem + ".resu");
   spec.results[80] = outputBase / (stem + ".rmed");
+  spec.results[81] = outputBase / (stem + ".pvd"); // IMPR_RESU FORMAT='VTU', its .vtu beside it
   spec.resultsOptional = true;
   return runSpec(spec, options);
 }

@@ -30,8 +30,8 @@ struct JobResult {
 
 JobResult runExport(const Export& study, const RunOptions& options);
 
-// `stella run FILE.comm --unit 20=mesh.med`: outputs beside the command file
-// (FILE.mess, FILE.resu, FILE.rmed for unit 80, FILE.fort.<N> for other units written).
+// `stella run FILE.comm --unit 20=mesh.med`: outputs beside the command file (FILE.mess,
+// FILE.resu, FILE.rmed for unit 80, FILE.pvd for unit 81 with its FILE_<k>.vtu), when written.
 JobResult runCommandFile(const std::filesystem::path& commandFile,
                          const std::map<int, std::filesystem::path>& units, const RunOptions& options);
 

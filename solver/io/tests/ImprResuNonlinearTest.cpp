@@ -183,8 +183,10 @@ TEST(ImprResuNonlinear, MedOfStatNonLineReadByMeshioAndH5py) {
   ASSERT_EQ(r.diagnostic, JobDiagnostic::Ok) << r.message;
   EXPECT_EQ(
       testing::runPython(dir, barCheck, (dir / "bar.rmed").string() + " " + (dir / "bar.resu").string()), 0);
-  // FORMAT='VTU' (catalogue extension, default unit 81).
-  EXPECT_EQ(testing::runPython(dir, vtuCheck, (dir / "bar.work" / "fort.81").string()), 0);
+  // FORMAT='VTU' (catalogue extension, default unit 81): the .pvd copied back as bar.pvd with its
+  // .vtu files renamed bar_<k>.vtu beside it and named so in the collection.
+  EXPECT_TRUE(std::filesystem::exists(dir / "bar_6.vtu"));
+  EXPECT_EQ(testing::runPython(dir, vtuCheck, (dir / "bar.pvd").string()), 0);
   // INTERVALLE_VALE: DX = 3e-3 x at t = 2, so DX in [2.9e-3, 1] keeps the 8 nodes at x = 1, 2.
   EXPECT_NE(r.message.find("group of nodes FAR (8 nodes)"), std::string::npos) << r.message;
   EXPECT_NE(r.message.find("DEFORME: 12 nodes moved by DEPL of RESU at NUME_ORDRE 6"), std::string::npos)
