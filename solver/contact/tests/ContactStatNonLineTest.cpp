@@ -161,7 +161,14 @@ TEST(ContactStatNonLine, PlaneStrainBlocksWithPenaltyWithinTheExpectedError) {
   Blocks b;
   b.zone = ", ALGO_CONT='PENALISATION', E_N=1.0e8";
   b.tests = pressedChecks(b, 1e-4);
-  const StudyRun r = runStudy("blocks_penalty", b.mesh(4), b.comm());
+  // MULT_FRONT (UMFPACK): MUMPS's null-pivot detection flags a multiplier of this penalised saddle
+  // system in the unoptimised (sanitizer) build only: a known defect of the MUMPS path with
+  // penalty, reported in doc/contact.md, not what this test measures.
+  std::string comm = b.comm();
+  const std::string convergence = "CONVERGENCE=_F(RESI_GLOB_MAXI=1.0e-9)";
+  comm.replace(comm.find(convergence), convergence.size(),
+               convergence + ", SOLVEUR=_F(METHODE='MULT_FRONT')");
+  const StudyRun r = runStudy("blocks_penalty", b.mesh(4), comm);
   EXPECT_TRUE(passed(r));
   EXPECT_NE(r.message.find("contact DISCRETE PENALISATION (E_N=100000000)"), std::string::npos);
 }
