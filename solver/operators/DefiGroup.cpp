@@ -8,6 +8,7 @@
 #include "solver/database/Result.hpp"
 #include "solver/mesh/GroupOperations.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
+#include "solver/post/FieldSelection.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 
@@ -212,17 +213,7 @@ std::vector<std::optional<double>> nodalValues(const Mesh& m, const KeywordTree&
   const auto c = occ.conceptValue("RESULTAT");
   const auto result = conceptData<Result>(c);
   STELLA_ASSERT(result != nullptr, "RESULTAT holds no result");
-  const ResultStep* step = nullptr;
-  if (occ.has("NUME_ORDRE")) {
-    step = result->stepNumber(static_cast<int>(occ.integer("NUME_ORDRE")));
-  } else if (occ.has("INST")) {
-    step = result->stepAtTime(occ.real("INST"), occ.realOr("PRECISION", 1e-6));
-  } else if (!result->steps.empty()) {
-    step = &result->steps.back();
-  }
-  if (step == nullptr) {
-    fail("DEFI_GROUP_9", "the result " + c->name + " has no such step", occ.location());
-  }
+  const ResultStep* step = &selectStep(*result, c->name, occ, occ.realOr("PRECISION", 1e-6));
   const std::string name = occ.textOr("NOM_CHAM", "DEPL");
   const Field* f = step->field(name);
   if (f == nullptr || f->support() != FieldSupport::Node) {

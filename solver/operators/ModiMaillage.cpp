@@ -9,6 +9,7 @@
 #include "solver/mesh/MeshGeometry.hpp"
 #include "solver/mesh/MeshTransform.hpp"
 #include "solver/operators/MeshOperatorUtil.hpp"
+#include "solver/post/FieldSelection.hpp"
 #include "solver/session/Session.hpp"
 
 #include <fmt/format.h>
@@ -73,18 +74,7 @@ void deform(OperatorCall& call, Mesh& mesh, const KeywordTree& occ) {
   const auto c = occ.conceptValue("RESULTAT");
   const auto result = conceptData<Result>(c);
   STELLA_ASSERT(result != nullptr, "RESULTAT holds no result");
-  const ResultStep* step = nullptr;
-  if (occ.has("NUME_ORDRE")) {
-    step = result->stepNumber(static_cast<int>(occ.integer("NUME_ORDRE")));
-  } else if (occ.has("INST")) {
-    step = result->stepAtTime(occ.real("INST"), occ.realOr("PRECISION", 1e-6));
-  } else if (!result->steps.empty()) {
-    step = &result->steps.back();
-  }
-  if (step == nullptr) {
-    throw UserError(
-        Diagnostic::fatal("MODI_MAILLAGE_3", "the result " + c->name + " has no such step", occ.location()));
-  }
+  const ResultStep* step = &selectStep(*result, c->name, occ, occ.realOr("PRECISION", 1e-6));
   const std::string name = occ.textOr("NOM_CHAM", "DEPL");
   const Field* f = step->field(name);
   if (f == nullptr || f->support() != FieldSupport::Node) {

@@ -91,14 +91,15 @@ EntitySelection cellNodeEntities(const Mesh& mesh, const Field& field, const std
 
 } // namespace
 
-const ResultStep& selectStep(const Result& result, const std::string& resultName, const KeywordTree& occ) {
+const ResultStep& selectStep(const Result& result, const std::string& resultName, const KeywordTree& occ,
+                             double precision) {
   const ResultStep* step = nullptr;
   std::string what;
   if (occ.has("NUME_ORDRE")) {
     step = result.stepNumber(static_cast<int>(occ.integer("NUME_ORDRE")));
     what = fmt::format("NUME_ORDRE {}", occ.integer("NUME_ORDRE"));
   } else if (occ.has("INST")) {
-    step = result.stepAtTime(occ.real("INST"));
+    step = result.stepAtTime(occ.real("INST"), precision);
     what = fmt::format("INST {}", occ.real("INST"));
   } else if (!result.steps.empty()) {
     step = &result.steps.back();

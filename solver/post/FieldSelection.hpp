@@ -12,10 +12,11 @@
 
 namespace stella {
 
-// The step of RESULTAT designated by NUME_ORDRE or INST in `occurrence` (UserError RESU_1 with
-// the stored steps when absent).
+// The step of RESULTAT designated by NUME_ORDRE or INST in `occurrence`, the last one when neither
+// is given (UserError RESU_1 with the stored steps when absent). `precision`: relative tolerance
+// on INST.
 const ResultStep& selectStep(const Result& result, const std::string& resultName,
-                             const KeywordTree& occurrence);
+                             const KeywordTree& occurrence, double precision = 1.0e-6);
 
 // The field NOM_CHAM of a step (RESU_2 listing the stored fields when absent).
 const Field& selectField(const ResultStep& step, const std::string& resultName, const std::string& fieldName,
