@@ -6,6 +6,7 @@
 
 #include "interpreter/Interpreter.hpp"
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -18,32 +19,68 @@ struct Usage {
   std::set<std::string> values;   // "CMD/FACT/KW=VALUE"
 };
 
-void recordArguments(const std::string& path, const std::vector<KeywordArgument>& keywords, Usage& usage);
+// Containers on the path being recorded: a list that contains itself (`a[0] = a`) is walked once,
+// and nesting is bounded by the interpreter's own limit, so no input can exhaust the stack.
+using Visiting = std::vector<const void*>;
 
-void recordValue(const std::string& path, const Value& v, Usage& usage) {
+void recordValue(const std::string& path, const Value& v, Usage& usage, Visiting& visiting);
+void recordArguments(const std::string& path, const std::vector<KeywordArgument>& keywords, Usage& usage,
+                     Visiting& visiting);
+
+const void* containerIdentity(const Value& v) {
+  if (v.isList()) {
+    return v.asList().get();
+  }
+  if (v.isDict()) {
+    return v.asDict().get();
+  }
+  if (v.isFactor()) {
+    return v.asFactor().get();
+  }
+  return nullptr;
+}
+
+void recordContents(const std::string& path, const Value& v, Usage& usage, Visiting& visiting) {
   if (v.isSequence()) {
     for (const Value& x : v.items()) {
-      recordValue(path, x, usage);
+      recordValue(path, x, usage, visiting);
     }
   } else if (v.isFactor()) {
-    recordArguments(path, v.asFactor()->keywords, usage);
+    recordArguments(path, v.asFactor()->keywords, usage, visiting);
   } else if (v.isDict()) {
     for (const auto& [key, value] : v.asDict()->items) {
       if (key.isString()) {
         usage.keywords.insert(path + "/" + key.asString());
-        recordValue(path + "/" + key.asString(), value, usage);
+        recordValue(path + "/" + key.asString(), value, usage, visiting);
       }
     }
-  } else if (v.isString() || v.isInt()) {
-    usage.values.insert(path + "=" + v.str());
   }
 }
 
-void recordArguments(const std::string& path, const std::vector<KeywordArgument>& keywords, Usage& usage) {
+void recordValue(const std::string& path, const Value& v, Usage& usage, Visiting& visiting) {
+  if (v.isString() || v.isInt()) {
+    usage.values.insert(path + "=" + v.str());
+    return;
+  }
+  if (!v.isSequence() && !v.isFactor() && !v.isDict()) {
+    return;
+  }
+  const void* id = containerIdentity(v);
+  const bool seen = id != nullptr && std::find(visiting.begin(), visiting.end(), id) != visiting.end();
+  if (seen || visiting.size() >= static_cast<std::size_t>(maxValueNesting)) {
+    return;
+  }
+  visiting.push_back(id);
+  recordContents(path, v, usage, visiting);
+  visiting.pop_back();
+}
+
+void recordArguments(const std::string& path, const std::vector<KeywordArgument>& keywords, Usage& usage,
+                     Visiting& visiting) {
   for (const KeywordArgument& k : keywords) {
     usage.keywords.insert(path + "/" + k.name);
     if (k.value) {
-      recordValue(path + "/" + k.name, *k.value, usage);
+      recordValue(path + "/" + k.name, *k.value, usage, visiting);
     }
   }
 }
@@ -55,7 +92,8 @@ public:
   explicit RecordingHandler(Usage& usage) : usage_(usage) {}
   Value callCommand(const std::string& command, const CallArguments& args,
                     const std::string& target) override {
-    recordArguments(command, args.keywords, usage_);
+    Visiting visiting;
+    recordArguments(command, args.keywords, usage_, visiting);
     usage_.keywords.insert(command);
     if (command == "FIN") {
       finished_ = true;

@@ -11,6 +11,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <map>
 
 namespace stella {
@@ -643,6 +645,20 @@ TEST(Catalog, DescribeAndJson) {
   EXPECT_NE(json.find("\"name\":\"DEFI_CONTACT\""), std::string::npos);
   EXPECT_EQ(std::count(json.begin(), json.end(), '{'), std::count(json.begin(), json.end(), '}'));
   EXPECT_THROW(c.describe("NOPE"), UserError);
+}
+
+// A list that contains itself (`a[0] = a`) used to recurse without end in the coverage walk
+// (a stack overflow found by hand); it is now walked once and its values still count.
+TEST(CatalogCoverage, SelfContainingListIsWalkedOnce) {
+  const auto file = std::filesystem::temp_directory_path() / "stella_coverage_selfref.comm";
+  {
+    std::ofstream out(file);
+    out << "DEBUT()\na = ['ANALYTIQUE', 2]\na[1] = a\nTEST_TABLE(REFERENCE=a)\nFIN()\n";
+  }
+  const std::string report = catalogCoverage({file});
+  std::filesystem::remove(file);
+  // TEST_TABLE: one keyword (REFERENCE) and one of its values (ANALYTIQUE) used, once.
+  EXPECT_NE(report.find("| TEST_TABLE | 27/28 | 25/26 |"), std::string::npos) << report;
 }
 
 } // namespace
