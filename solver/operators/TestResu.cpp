@@ -1,13 +1,15 @@
 // TEST_RESU RESU: tests one value of a result field (at a node, at a cell's Gauss point, or the
 // MIN/MAX/SOMM/SOMM_ABS of a component) or a step parameter (PARA), printing OK/NOOK lines.
 // Element fields are designated by MAILLE / GROUP_MA and POINT (ELGA: Gauss point; ELNO: local
-// node) or, for ELNO fields, NOEUD. CHAM_NO, CHAM_ELEM and CARTE are refused as not implemented
-// yet: no command of the catalogue makes such a concept (CREA_CHAMP is not there); the other
-// forms are refused likewise.
+// node) or, for ELNO fields, NOEUD. CHAM_NO and CHAM_ELEM test a field concept made by
+// CREA_CHAMP the same way (headers CHAM_NO / CHAM_ELEM). TYPE_TEST without NOM_CMP reduces every
+// component. CARTE, GENE, OBJET, TEST_NAN and MAILLAGE are refused as not implemented yet.
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/post/FieldConcept.hpp"
 #include "solver/post/FieldSelection.hpp"
 #include "solver/post/TestKeywords.hpp"
+#include "solver/post/TestReport.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 
@@ -32,6 +34,83 @@ void testParameter(OperatorCall& call, const KeywordTree& occ, const Result& res
              valueTestFromKeywords(occ, it->second, para));
 }
 
+// Tests one value of `field` designated by the occurrence (NOM_CMP with a node, a cell's point or
+// TYPE_TEST; TYPE_TEST without NOM_CMP reduces every component). `header` starts with what names
+// the field (RESULTAT / NUME_ORDRE / NOM_CHAM, or CHAM_NO, or CHAM_ELEM).
+void testFieldValue(OperatorCall& call, const KeywordTree& occ, const Mesh& mesh, const Field& field,
+                    const std::string& fieldName, std::vector<std::pair<std::string, std::string>> header) {
+  const std::string type = occ.textOr("TYPE_TEST", "");
+  if (!occ.has("NOM_CMP") && type.empty()) {
+    throw UserError(Diagnostic::fatal("RESU_3", "NOM_CMP is needed to test a field value", occ.location())
+                        .withNote(fmt::format("components of {}: {}; or give TYPE_TEST to reduce them all",
+                                              fieldName, fmt::join(field.components(), ", "))));
+  }
+  const std::string cmp = occ.textOr("NOM_CMP", "");
+  std::vector<std::size_t> components;
+  if (occ.has("NOM_CMP")) {
+    components.push_back(selectComponent(field, fieldName, cmp, occ));
+  } else {
+    for (std::size_t c = 0; c < field.componentCount(); ++c) {
+      components.push_back(c);
+    }
+  }
+  const EntitySelection sel = selectEntities(mesh, field, occ);
+  double value = 0.0;
+  if (!type.empty()) {
+    std::vector<double> values;
+    for (std::size_t e : sel.entities) {
+      for (std::size_t c : components) {
+        if (field.defined(e, c)) {
+          values.push_back(field.value(e, c));
+        }
+      }
+    }
+    if (values.empty()) {
+      throw UserError(
+          Diagnostic::fatal("RESU_6", "the selection holds no value of the component", occ.location()));
+    }
+    value = reduceByTestType(type, values);
+    header.emplace_back("TYPE_TEST", type);
+    if (!cmp.empty()) {
+      header.emplace_back("NOM_CMP", cmp);
+    }
+  } else {
+    header.emplace_back("NOM_CMP", cmp);
+    if (!sel.single) {
+      throw UserError(
+          Diagnostic::fatal("RESU_4", "the keywords designate several values; one is needed", occ.location())
+              .withNote(field.support() == FieldSupport::Node
+                            ? "give NOEUD or a GROUP_NO of one node, or TYPE_TEST"
+                        : field.support() == FieldSupport::CellNode
+                            ? "give MAILLE (or a GROUP_MA of one cell) and NOEUD (or POINT), or TYPE_TEST"
+                            : "give MAILLE (or a GROUP_MA of one cell) and POINT, or TYPE_TEST"));
+    }
+    const std::size_t e = sel.entities.front();
+    const std::size_t c = components.front();
+    if (!field.defined(e, c)) {
+      throw UserError(Diagnostic::fatal(
+          "RESU_6", fmt::format("component {} of {} has no value at {}", cmp, fieldName, sel.label),
+          occ.location()));
+    }
+    value = field.value(e, c);
+    if (field.support() == FieldSupport::CellNode && !occ.has("POINT")) {
+      const auto space = sel.label.find(' '); // "cell node"
+      header.emplace_back("MAILLE", sel.label.substr(0, space));
+      header.emplace_back("NOEUD", sel.label.substr(space + 1));
+    } else if (field.support() == FieldSupport::Node || field.support() == FieldSupport::Cell) {
+      header.emplace_back(field.support() == FieldSupport::Node ? "NOEUD" : "MAILLE", sel.label);
+    } else {
+      const auto cut = sel.label.find(" point "); // "cell point p"
+      header.emplace_back("MAILLE", sel.label.substr(0, cut));
+      header.emplace_back("POINT", sel.label.substr(cut + 7));
+    }
+  }
+  if (occ.textOr("VALE_ABS", "NON") == "OUI") {
+    value = std::fabs(value);
+  }
+  reportTest(call.session, header, valueTestFromKeywords(occ, value, fieldName));
+}
+
 void testResu(OperatorCall& call, const KeywordTree& occ) {
   for (const char* k : {"FREQ", "NUME_MODE", "NOEUD_CMP", "NOM_CAS", "ANGLE", "NOM_VARI"}) {
     if (occ.has(k)) {
@@ -50,72 +129,43 @@ void testResu(OperatorCall& call, const KeywordTree& occ) {
   }
   const std::string fieldName = occ.text("NOM_CHAM");
   const Field& field = selectField(step, name, fieldName, occ);
-  if (!occ.has("NOM_CMP")) {
-    throw UserError(
-        Diagnostic::fatal("RESU_3", "NOM_CMP is needed to test a field value", occ.location())
-            .withNote(fmt::format("components of {}: {}", fieldName, fmt::join(field.components(), ", "))));
+  testFieldValue(call, occ, *result->mesh, field, fieldName,
+                 {{"RESULTAT", name}, {"NUME_ORDRE", std::to_string(step.number)}, {"NOM_CHAM", fieldName}});
+}
+
+// CHAM_NO / CHAM_ELEM: a field concept made by CREA_CHAMP.
+void testFieldConcept(OperatorCall& call, const KeywordTree& occ, const std::string& keyword) {
+  auto concept_ = occ.conceptValue("CHAM_GD");
+  auto data = conceptData<FieldConcept>(concept_);
+  STELLA_ASSERT(data != nullptr && data->field != nullptr && data->mesh != nullptr, "CHAM_GD holds no field");
+  const bool nodal = data->field->support() == FieldSupport::Node;
+  if (nodal != (keyword == "CHAM_NO")) {
+    throw UserError(Diagnostic::fatal("RESU_8",
+                                      fmt::format("{} is a {} field ({}); test it under {}", concept_->name,
+                                                  nodal ? "nodal" : "cell", data->fieldType,
+                                                  nodal ? "CHAM_NO" : "CHAM_ELEM"),
+                                      occ.locationOf("CHAM_GD")));
   }
-  const std::string cmp = occ.text("NOM_CMP");
-  const std::size_t c = selectComponent(field, fieldName, cmp, occ);
-  const EntitySelection sel = selectEntities(*result->mesh, field, occ);
-  const std::string type = occ.textOr("TYPE_TEST", "");
-  double value = 0.0;
-  std::vector<std::pair<std::string, std::string>> header{{"RESULTAT", name},
-                                                          {"NUME_ORDRE", std::to_string(step.number)},
-                                                          {"NOM_CHAM", fieldName},
-                                                          {"NOM_CMP", cmp}};
-  if (!type.empty()) {
-    value = reduceValues(field, c, sel.entities, type, occ);
-    header.emplace_back("TYPE_TEST", type);
-  } else {
-    if (!sel.single) {
-      throw UserError(
-          Diagnostic::fatal("RESU_4", "the keywords designate several values; one is needed", occ.location())
-              .withNote(field.support() == FieldSupport::Node
-                            ? "give NOEUD or a GROUP_NO of one node, or TYPE_TEST"
-                        : field.support() == FieldSupport::CellNode
-                            ? "give MAILLE (or a GROUP_MA of one cell) and NOEUD (or POINT), or TYPE_TEST"
-                            : "give MAILLE (or a GROUP_MA of one cell) and POINT, or TYPE_TEST"));
-    }
-    const std::size_t e = sel.entities.front();
-    if (!field.defined(e, c)) {
-      throw UserError(Diagnostic::fatal(
-          "RESU_6", fmt::format("component {} of {} has no value at {}", cmp, fieldName, sel.label),
-          occ.location()));
-    }
-    value = field.value(e, c);
-    if (field.support() == FieldSupport::CellNode && !occ.has("POINT")) {
-      const auto space = sel.label.find(' '); // "cell node"
-      header.emplace_back("MAILLE", sel.label.substr(0, space));
-      header.emplace_back("NOEUD", sel.label.substr(space + 1));
-    } else {
-      header.emplace_back(field.support() == FieldSupport::Node ? "NOEUD" : "MAILLE", sel.label);
-    }
-  }
-  if (occ.textOr("VALE_ABS", "NON") == "OUI") {
-    value = std::fabs(value);
-  }
-  reportTest(call.session, header, valueTestFromKeywords(occ, value, fieldName));
+  testFieldValue(call, occ, *data->mesh, *data->field, data->origin, {{keyword, concept_->name}});
 }
 
 Value runTestResu(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
-  for (const char* k : {"CHAM_NO", "CHAM_ELEM", "CARTE"}) {
-    if (kw.has(k)) {
-      throw UserError(
-          Diagnostic::fatal("TEST_1", fmt::format("TEST_RESU {} is not implemented yet", k), kw.locationOf(k))
-              .withNote(
-                  "no command of stella makes a field concept (cham_no, cham_elem, carte) yet: CREA_CHAMP "
-                  "is not in the catalogue. Test the field inside its result with "
-                  "RESU=_F(RESULTAT=..., NOM_CHAM='SIEF_NOEU', NOM_CMP=..., NOEUD=...), or "
-                  "NOM_CHAM='SIEF_ELNO' with MAILLE and NOEUD"));
-    }
+  if (kw.has("CARTE")) {
+    throw UserError(
+        Diagnostic::fatal("TEST_1", "TEST_RESU CARTE is not implemented yet", kw.locationOf("CARTE"))
+            .withNote("no command of stella makes a carte; test fields with CHAM_NO, CHAM_ELEM or RESU"));
   }
   for (const char* k : {"GENE", "OBJET", "TEST_NAN", "MAILLAGE"}) {
     if (kw.has(k)) {
       throw UserError(
           Diagnostic::fatal("TEST_1", fmt::format("TEST_RESU {} is not implemented yet", k), kw.locationOf(k))
               .withNote("test result fields with RESU=_F(RESULTAT=..., NOM_CHAM=..., NOM_CMP=...)"));
+    }
+  }
+  for (const char* k : {"CHAM_NO", "CHAM_ELEM"}) {
+    for (const KeywordTree& occ : kw.occurrences(k)) {
+      testFieldConcept(call, occ, k);
     }
   }
   for (const KeywordTree& occ : kw.occurrences("RESU")) {

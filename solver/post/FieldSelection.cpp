@@ -92,14 +92,14 @@ EntitySelection cellNodeEntities(const Mesh& mesh, const Field& field, const std
 } // namespace
 
 const ResultStep& selectStep(const Result& result, const std::string& resultName, const KeywordTree& occ,
-                             double precision) {
+                             double precision, bool absolute) {
   const ResultStep* step = nullptr;
   std::string what;
   if (occ.has("NUME_ORDRE")) {
     step = result.stepNumber(static_cast<int>(occ.integer("NUME_ORDRE")));
     what = fmt::format("NUME_ORDRE {}", occ.integer("NUME_ORDRE"));
   } else if (occ.has("INST")) {
-    step = result.stepAtTime(occ.real("INST"), precision);
+    step = result.stepAtTime(occ.real("INST"), precision, absolute);
     what = fmt::format("INST {}", occ.real("INST"));
   } else if (!result.steps.empty()) {
     step = &result.steps.back();

@@ -13,10 +13,10 @@
 namespace stella {
 
 // The step of RESULTAT designated by NUME_ORDRE or INST in `occurrence`, the last one when neither
-// is given (UserError RESU_1 with the stored steps when absent). `precision`: relative tolerance
-// on INST.
+// is given (UserError RESU_1 with the stored steps when absent). `precision`: tolerance on INST,
+// relative (CRITERE='RELATIF') unless `absolute` (CRITERE='ABSOLU').
 const ResultStep& selectStep(const Result& result, const std::string& resultName,
-                             const KeywordTree& occurrence, double precision = 1.0e-6);
+                             const KeywordTree& occurrence, double precision = 1.0e-6, bool absolute = false);
 
 // The field NOM_CHAM of a step (RESU_2 listing the stored fields when absent).
 const Field& selectField(const ResultStep& step, const std::string& resultName, const std::string& fieldName,

@@ -1,0 +1,102 @@
+// CREA_CHAMP: a field concept (cham_no, cham_elem) extracted from a result (OPERATION='EXTR',
+// RESULTAT, NOM_CHAM, NUME_ORDRE or INST with CRITERE / PRECISION, the last step when neither is
+// given). TYPE_CHAM must name the field's support and quantity (DEPL is NOEU_DEPL_R, SIEF_ELGA is
+// ELGA_SIEF_R, SIEF_ELNO is ELNO_SIEF_R...), as code_aster requires. The other operations (AFFE,
+// ASSE, COMB, EVAL, DISC, NORMALE, R2C, C2R), the other sources of EXTR and the extreme over
+// steps (TYPE_MAXI) are refused by name as not implemented yet.
+
+#include "interpreter/Diagnostics.hpp"
+#include "solver/post/FieldConcept.hpp"
+#include "solver/post/FieldSelection.hpp"
+#include "solver/session/OperatorRegistry.hpp"
+#include "solver/session/Session.hpp"
+
+#include <fmt/format.h>
+
+namespace stella {
+
+namespace {
+
+[[noreturn]] void notImplemented(const KeywordTree& kw, const std::string& keyword, const std::string& what,
+                                 const std::string& note) {
+  throw UserError(Diagnostic::fatal("CREA_1", fmt::format("CREA_CHAMP {} is not implemented yet", what),
+                                    kw.locationOf(keyword))
+                      .withNote(note));
+}
+
+void refuseUnsupported(const KeywordTree& kw) {
+  const std::string operation = kw.text("OPERATION");
+  if (operation != "EXTR") {
+    notImplemented(kw, "OPERATION", fmt::format("OPERATION='{}'", operation),
+                   "stella's CREA_CHAMP extracts a field of a result: OPERATION='EXTR', RESULTAT=..., "
+                   "NOM_CHAM=..., TYPE_CHAM=...");
+  }
+  for (const char* k : {"MAILLAGE", "TABLE", "CARA_ELEM", "CHARGE", "CHAM_MATER"}) {
+    if (kw.has(k) && !kw.has("RESULTAT")) {
+      notImplemented(kw, k, fmt::format("OPERATION='EXTR' from {}", k),
+                     "extract a field of a result with RESULTAT=..., NOM_CHAM=...");
+    }
+  }
+  for (const char* k : {"TYPE_MAXI", "FREQ", "NUME_MODE", "NOEUD_CMP", "NOM_CAS", "ANGLE"}) {
+    if (kw.has(k)) {
+      notImplemented(kw, k, fmt::format("OPERATION='EXTR' with {}", k),
+                     "designate the step with NUME_ORDRE or INST");
+    }
+  }
+  if (kw.textOr("INTERPOL", "NON") != "NON") {
+    notImplemented(kw, "INTERPOL", "INTERPOL='LIN' (a field interpolated between two steps)",
+                   "extract a stored step (NUME_ORDRE, or INST with PRECISION)");
+  }
+  if (kw.text("TYPE_CHAM").rfind("CART_", 0) == 0) {
+    notImplemented(kw, "TYPE_CHAM", fmt::format("TYPE_CHAM='{}' (a carte)", kw.text("TYPE_CHAM")),
+                   "extract the field as a cham_elem (ELEM_, ELGA_ or ELNO_ types)");
+  }
+}
+
+// TYPE_CHAM must name the support and the quantity of the stored field.
+void checkType(const KeywordTree& kw, const Field& field, const std::string& fieldName) {
+  const std::string asked = kw.text("TYPE_CHAM");
+  const std::string actual = fieldTypeName(field);
+  if (asked == actual) {
+    return;
+  }
+  const bool sameSupport = asked.substr(0, 4) == actual.substr(0, 4);
+  throw UserError(
+      Diagnostic::fatal("CREA_2",
+                        fmt::format("TYPE_CHAM='{}' does not match the field {}, which is of type {}", asked,
+                                    fieldName, actual),
+                        kw.locationOf("TYPE_CHAM"))
+          .withNote(sameSupport
+                        ? fmt::format("give TYPE_CHAM='{}'", actual)
+                        : fmt::format("give TYPE_CHAM='{}', or compute a field on the support {} with "
+                                      "CALC_CHAMP (e.g. SIEF_NOEU, SIEF_ELNO) and extract that one",
+                                      actual, asked.substr(0, 4))));
+}
+
+Value runCreaChamp(OperatorCall& call) {
+  const KeywordTree& kw = call.keywords;
+  refuseUnsupported(kw);
+  const auto concept_ = kw.conceptValue("RESULTAT");
+  const auto result = conceptData<Result>(concept_);
+  STELLA_ASSERT(result != nullptr, "RESULTAT holds no result");
+  const bool absolute = kw.textOr("CRITERE", "RELATIF") == "ABSOLU";
+  const ResultStep& step = selectStep(*result, concept_->name, kw, kw.realOr("PRECISION", 1.0e-6), absolute);
+  const std::string fieldName = kw.text("NOM_CHAM");
+  const Field& field = selectField(step, concept_->name, fieldName, kw);
+  checkType(kw, field, fieldName);
+  auto data = std::make_shared<FieldConcept>();
+  data->field = std::make_shared<const Field>(field); // a copy: later changes of the result do not reach it
+  data->mesh = result->mesh;
+  data->fieldType = fieldTypeName(field);
+  data->origin = fieldName;
+  call.session.message() << fmt::format("CREA_CHAMP: {} = {} {} of {} at NUME_ORDRE {} (INST {})\n",
+                                        call.resultName, data->fieldType, fieldName, concept_->name,
+                                        step.number, step.time);
+  return call.makeConcept(data);
+}
+
+} // namespace
+
+STELLA_OPERATOR("CREA_CHAMP", runCreaChamp);
+
+} // namespace stella
