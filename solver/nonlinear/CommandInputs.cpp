@@ -3,6 +3,7 @@
 #include "solver/nonlinear/CommandInputs.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/model/RepeatedConditions.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 
 #include <fmt/format.h>
@@ -11,6 +12,7 @@ namespace stella {
 
 std::vector<Excitation> readExcitations(const KeywordTree& keywords) {
   std::vector<Excitation> out;
+  std::vector<ExcitedLoad> loads;
   for (const KeywordTree& occ : keywords.occurrences("EXCIT")) {
     Excitation e;
     auto charge = occ.conceptValue("CHARGE");
@@ -36,7 +38,13 @@ std::vector<Excitation> readExcitations(const KeywordTree& keywords) {
           "LOAD_4", fmt::format("TYPE_CHARGE='{}' is not implemented yet", occ.text("TYPE_CHARGE")),
           occ.locationOf("TYPE_CHARGE")));
     }
+    loads.push_back({e.load, e.kinematic, e.multiplier.get(), charge->name, occ.locationOf("CHARGE")});
     out.push_back(std::move(e));
+  }
+  // A DOF imposed by several dualised conditions keeps one multiplier (LOAD_11 on a conflict).
+  const auto merged = mergeRepeatedConditions(loads);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    out[i].load = merged[i];
   }
   return out;
 }
