@@ -90,6 +90,10 @@ public:
     id_.nnz = p.nonZeros();
     id_.irn = irn_.data();
     id_.jcn = jcn_.data();
+    // The values of this matrix, for the analysis's numerical preprocessing (weighted matching and
+    // scaling, 2x2 pivots of the multipliers). Never the pointer of an earlier factorisation: a
+    // re-analysis after a pattern change read that stale array (INFOG(1) = -6 on penalised contact).
+    id_.a = a.values().size() == irn_.size() ? const_cast<double*>(a.values().data()) : nullptr;
     id_.job = jobAnalyse;
     dmumps_c(&id_);
     check("analysis");

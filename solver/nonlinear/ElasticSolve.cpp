@@ -9,17 +9,30 @@ StaticSolution ElasticSolve::solve(double time, bool withStress) {
   const PointState zero = zeroPointState(system_.model(), system_.behaviours().maxInternalVariables());
   const Eigen::VectorXd none = Eigen::VectorXd::Zero(n);
   if (!factorized_) {
-    std::vector<Eigen::Triplet<double>> triplets;
-    system_.assembler().run(none, none, zero, behaviour::Option::ElasticTangent,
-                            {&triplets, nullptr, nullptr});
-    system_.solver().factorize(system_.matrix(triplets), true);
+    StiffnessMatrix* k = nullptr;
+    {
+      PhaseClock clock(system_.phases().assembly);
+      k = &system_.stiffness(true);
+      system_.assembler().run(none, none, zero, behaviour::Option::ElasticTangent,
+                              {nullptr, nullptr, nullptr, k});
+    }
+    system_.solver().factorize(*k);
     factorized_ = true;
   }
+  Eigen::VectorXd f;
+  Eigen::VectorXd g;
+  Eigen::VectorXd p;
+  {
+    PhaseClock clock(system_.phases().assembly);
+    f = system_.externalForces(time);
+    g = system_.relationValues(time);
+    p = system_.eliminatedValues(time);
+  }
   StaticSolution s;
-  system_.solver().solve(system_.externalForces(time), system_.relationValues(time),
-                         system_.eliminatedValues(time), s.displacement, s.multipliers);
+  system_.solver().solve(f, g, p, s.displacement, s.multipliers);
   s.state = zero;
   if (withStress) {
+    PhaseClock clock(system_.phases().post);
     system_.assembler().run(none, s.displacement, zero, behaviour::Option::Full,
                             {nullptr, nullptr, &s.state});
   }

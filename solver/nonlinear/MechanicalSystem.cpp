@@ -93,3 +93,18 @@ Eigen::SparseMatrix<double> MechanicalSystem::matrix(std::vector<Eigen::Triplet<
 }
 
 } // namespace stella
+
+namespace stella {
+
+StiffnessMatrix& MechanicalSystem::stiffness(bool symmetric) {
+  auto& k = stiffness_[symmetric ? 0 : 1];
+  if (!k) {
+    PhaseClock clock(phases_.numbering);
+    k = std::make_unique<StiffnessMatrix>(dofs_, *model_->mesh, assembler_.cells(),
+                                          symmetric ? linalg::Storage::Upper : linalg::Storage::Full);
+  }
+  k->setZero();
+  return *k;
+}
+
+} // namespace stella

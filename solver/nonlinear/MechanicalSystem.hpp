@@ -8,6 +8,7 @@
 #include "solver/nonlinear/CellBehaviours.hpp"
 #include "solver/nonlinear/DofMap.hpp"
 #include "solver/nonlinear/Excitation.hpp"
+#include "solver/nonlinear/PhaseTimes.hpp"
 #include "solver/nonlinear/SaddleSolver.hpp"
 #include "solver/nonlinear/VolumeAssembler.hpp"
 
@@ -44,8 +45,15 @@ public:
   // Values of the eliminated DOFs at a time (physical size, zero elsewhere).
   Eigen::VectorXd eliminatedValues(double time) const;
 
-  // Tangent assembly (physical block).
+  // Tangent assembly from triplets (physical block; the slow path, for small tests).
   Eigen::SparseMatrix<double> matrix(std::vector<Eigen::Triplet<double>>& triplets) const;
+  // The tangent's physical block to assemble in place (AssemblyOutput::stiffness), zeroed. Its
+  // pattern is built at the first call (counted as numbering) and kept for the whole analysis;
+  // one per storage (symmetric: upper triangle; else full).
+  StiffnessMatrix& stiffness(bool symmetric);
+
+  // Phase times of the analysis (filled by the drivers; the solver keeps its own).
+  PhaseTimes& phases() { return phases_; }
 
 private:
   std::shared_ptr<const Model> model_;
@@ -59,6 +67,8 @@ private:
   std::vector<std::tuple<int, int, double>> eliminated_; // equation, excitation, value
   std::unique_ptr<SaddleSolver> solver_;
   std::vector<Eigen::VectorXd> forceCache_;
+  std::unique_ptr<StiffnessMatrix> stiffness_[2]; // upper, full
+  PhaseTimes phases_;
 };
 
 } // namespace stella

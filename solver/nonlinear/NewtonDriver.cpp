@@ -25,24 +25,30 @@ MechanicalState NewtonDriver::initialState(double time) const {
 void NewtonDriver::factorize(const MechanicalState& start, const Eigen::VectorXd& du,
                              behaviour::Option option, bool first) {
   (void)first;
-  std::vector<Eigen::Triplet<double>> triplets;
-  system_.assembler().run(start.displacement, du, start.points, option, {&triplets, nullptr, nullptr});
-  factorizeMatrix(triplets, start.displacement + du, !checked_);
-  checked_ = true;
+  StiffnessMatrix& k = system_.stiffness(symmetric());
+  system_.assembler().run(start.displacement, du, start.points, option, {nullptr, nullptr, nullptr, &k});
+  factorizeMatrix(k, start.displacement + du);
 }
 
 bool NewtonDriver::symmetric() const {
   return system_.behaviours().allSymmetric() && (constraint_ == nullptr || constraint_->symmetric());
 }
 
-void NewtonDriver::factorizeMatrix(std::vector<Eigen::Triplet<double>>& triplets, const Eigen::VectorXd& u,
-                                   bool check) {
+void NewtonDriver::factorizeMatrix(StiffnessMatrix& k, const Eigen::VectorXd& u) {
+  StiffnessMatrix* matrix = &k;
   if (constraint_ != nullptr) {
+    std::vector<Eigen::Triplet<double>> triplets;
     Eigen::VectorXd unused = Eigen::VectorXd::Zero(u.size());
     constraint_->addForces(u, unused, &triplets);
+    if (!symmetric() && k.storage() == linalg::Storage::Upper) {
+      // the constraint's tangent turned unsymmetric (friction): K in full storage
+      matrix = &system_.stiffness(false);
+      matrix->add(k);
+    }
+    matrix->add(triplets);
   }
   try {
-    system_.solver().factorize(system_.matrix(triplets), check, symmetric());
+    system_.solver().factorize(*matrix, symmetric());
   } catch (const UserError& e) {
     const std::string note = constraint_ != nullptr ? constraint_->singularNote() : std::string();
     if (note.empty() || e.first().id != "SOLVE_1") {
@@ -213,13 +219,12 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
   for (int iter = 0; iter <= lastIteration; ++iter) {
     const bool updateMatrix = settings_.tangentMatrix && settings_.reacIter > 0 && iter < lastIteration &&
                               ((iter + 1) % settings_.reacIter == 0);
-    std::vector<Eigen::Triplet<double>> triplets;
+    StiffnessMatrix* k = updateMatrix ? &system_.stiffness(symmetric()) : nullptr;
     Eigen::VectorXd fint;
     end.points = start.points;
     const behaviour::Option option = updateMatrix ? behaviour::Option::Full : behaviour::Option::ResidualOnly;
     Eigen::VectorXd r;
-    const auto status = residual(start, du, lambda, fext, option,
-                                 {updateMatrix ? &triplets : nullptr, &fint, &end.points}, r);
+    const auto status = residual(start, du, lambda, fext, option, {nullptr, &fint, &end.points, k}, r);
     if (!status.ok()) {
       log_ << fmt::format("   | {:4d} | behaviour integration failed in cell {}\n", iter,
                           system_.model().mesh->cellName(*status.failedCell));
@@ -277,7 +282,7 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
     }
     matrixNote = "";
     if (updateMatrix) {
-      factorizeMatrix(triplets, start.displacement + du, false);
+      factorizeMatrix(*k, start.displacement + du);
       matrixNote = "TANGENTE";
     }
     const Eigen::VectorXd c = g - system_.solver().times(start.displacement + du);

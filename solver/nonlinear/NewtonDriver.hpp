@@ -98,7 +98,7 @@ private:
                  bool first);
   // Factorises K (+ the constraint's tangent terms), adding the constraint's note to a
   // singular-stiffness error.
-  void factorizeMatrix(std::vector<Eigen::Triplet<double>>& triplets, const Eigen::VectorXd& u, bool check);
+  void factorizeMatrix(StiffnessMatrix& k, const Eigen::VectorXd& u);
   // The constraint's forces at u (zero without a constraint).
   Eigen::VectorXd constraintForces(const Eigen::VectorXd& u);
   bool symmetric() const;
@@ -108,7 +108,6 @@ private:
   std::ostream& log_;
   StepConstraint* constraint_ = nullptr;
   bool elasticFactorized_ = false;
-  bool checked_ = false;
   double forceScale_ = 0.0; // largest RESI_GLOB_RELA reference of the converged steps
   int convergedSteps_ = 0;
   bool factorized_ = false;

@@ -1,35 +1,22 @@
-// SaddleSolver: assembly of the bordered matrix, LU factorisation and the singularity check.
+// SaddleSolver: the bordered matrix from K, its factorisation and the singularity diagnosis.
 
 #include "solver/nonlinear/SaddleSolver.hpp"
 
 #include "interpreter/Diagnostics.hpp"
 
 #include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fmt/format.h>
+#include <stdexcept>
+#include <tuple>
 
 namespace stella {
 
 SaddleSolver::SaddleSolver(const DofMap& dofs, const Mesh& mesh, std::vector<ConstraintRow> rows,
                            std::vector<bool> eliminated)
     : dofs_(dofs), mesh_(mesh), rows_(std::move(rows)), eliminated_(std::move(eliminated)) {}
-
-namespace {
-
-double meanDiagonal(const Eigen::SparseMatrix<double>& k) {
-  double sum = 0.0;
-  int count = 0;
-  for (int i = 0; i < k.rows(); ++i) {
-    const double d = std::fabs(k.coeff(i, i));
-    if (d > 0.0) {
-      sum += d;
-      ++count;
-    }
-  }
-  return count > 0 ? sum / count : 1.0;
-}
-
-} // namespace
 
 void SaddleSolver::checkSingularity(const Eigen::SparseMatrix<double>& k) const {
   const int n = static_cast<int>(k.rows());
@@ -81,33 +68,27 @@ void SaddleSolver::checkSingularity(const Eigen::SparseMatrix<double>& k) const 
 
 namespace {
 
-// The bordered matrix in CSR for the facade (upper triangle when symmetric).
-linalg::SparseMatrix toCsr(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, linalg::Storage storage,
-                           std::shared_ptr<const linalg::SparsePattern>& cached) {
-  auto pattern = std::make_shared<linalg::SparsePattern>();
-  pattern->size = static_cast<int>(a.rows());
-  pattern->storage = storage;
-  pattern->rowStart.assign(static_cast<std::size_t>(a.rows()) + 1, 0);
-  std::vector<double> values;
-  for (int i = 0; i < a.outerSize(); ++i) {
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(a, i); it; ++it) {
-      if (storage == linalg::Storage::Upper && it.col() < i) {
-        continue;
-      }
-      pattern->columns.push_back(static_cast<int>(it.col()));
-      values.push_back(it.value());
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+double meanDiagonal(const StiffnessMatrix& k) {
+  double sum = 0.0;
+  int count = 0;
+  for (int i = 0; i < k.size(); ++i) {
+    const double d = std::fabs(k.diagonal(i));
+    if (d > 0.0) {
+      sum += d;
+      ++count;
     }
-    pattern->rowStart[static_cast<std::size_t>(i) + 1] = static_cast<std::int64_t>(pattern->columns.size());
   }
-  if (cached && cached->storage == storage && cached->rowStart == pattern->rowStart &&
-      cached->columns == pattern->columns) {
-    pattern.reset();
-  } else {
-    cached = pattern;
-  }
-  linalg::SparseMatrix m(cached);
-  m.values() = std::move(values);
-  return m;
+  return count > 0 ? sum / count : 1.0;
+}
+
+bool samePattern(const linalg::SparsePattern& a, const linalg::SparsePattern& b) {
+  return a.size == b.size && a.storage == b.storage && a.rowStart == b.rowStart && a.columns == b.columns;
 }
 
 } // namespace
@@ -116,54 +97,183 @@ std::string SaddleSolver::backendName() const {
   return solver_ ? std::string(solver_->backendName()) : std::string("-");
 }
 
-void SaddleSolver::factorize(const Eigen::SparseMatrix<double>& k, bool checkSingular, bool symmetric) {
-  k_ = k;
-  scale_ = meanDiagonal(k);
-  if (checkSingular) {
-    checkSingularity(k);
+void SaddleSolver::prepareRelations() {
+  if (!dofTermStart_.empty()) {
+    return;
   }
   const int n = dofs_.physicalCount();
-  const int m = static_cast<int>(rows_.size());
-  std::vector<Eigen::Triplet<double>> t;
-  t.reserve(static_cast<std::size_t>(k.nonZeros()) + 2 * rows_.size() + static_cast<std::size_t>(n));
-  for (int j = 0; j < k.outerSize(); ++j) {
-    for (Eigen::SparseMatrix<double>::InnerIterator it(k, j); it; ++it) {
-      if (!eliminated_[static_cast<std::size_t>(it.row())] && !eliminated_[static_cast<std::size_t>(j)]) {
-        t.emplace_back(it.row(), j, it.value());
+  rowTerms_.assign(rows_.size(), {});
+  std::vector<std::tuple<int, int, double>> byDof; // (DOF, relation, coefficient)
+  for (std::size_t r = 0; r < rows_.size(); ++r) {
+    auto& terms = rowTerms_[r];
+    for (const auto& [j, c] : rows_[r].terms) {
+      if (!eliminated_[static_cast<std::size_t>(j)]) {
+        terms.emplace_back(j, c);
       }
     }
+    std::stable_sort(terms.begin(), terms.end(),
+                     [](const auto& x, const auto& y) { return x.first < y.first; });
+    std::vector<std::pair<int, double>> merged;
+    for (const auto& t : terms) {
+      if (!merged.empty() && merged.back().first == t.first) {
+        merged.back().second += t.second;
+      } else {
+        merged.push_back(t);
+      }
+    }
+    terms = std::move(merged);
+    for (const auto& [j, c] : terms) {
+      byDof.emplace_back(j, static_cast<int>(r), c);
+    }
+  }
+  std::sort(byDof.begin(), byDof.end(), [](const auto& x, const auto& y) {
+    return std::tie(std::get<0>(x), std::get<1>(x)) < std::tie(std::get<0>(y), std::get<1>(y));
+  });
+  dofTermStart_.assign(static_cast<std::size_t>(n) + 1, 0);
+  dofTerms_.clear();
+  dofTerms_.reserve(byDof.size());
+  for (const auto& [j, r, c] : byDof) {
+    ++dofTermStart_[static_cast<std::size_t>(j) + 1];
+    dofTerms_.emplace_back(r, c);
   }
   for (int i = 0; i < n; ++i) {
-    if (eliminated_[static_cast<std::size_t>(i)]) {
-      t.emplace_back(i, i, scale_);
-    }
+    dofTermStart_[static_cast<std::size_t>(i) + 1] += dofTermStart_[static_cast<std::size_t>(i)];
   }
-  for (int r = 0; r < m; ++r) {
-    for (const auto& [j, c] : rows_[static_cast<std::size_t>(r)].terms) {
-      if (!eliminated_[static_cast<std::size_t>(j)]) {
-        t.emplace_back(n + r, j, scale_ * c);
-        t.emplace_back(j, n + r, scale_ * c);
+}
+
+template <class Entry, class RowEnd>
+void SaddleSolver::walk(const StiffnessMatrix& k, linalg::Storage storage, Entry&& entry,
+                        RowEnd&& rowEnd) const {
+  const int n = dofs_.physicalCount();
+  const int m = static_cast<int>(rows_.size());
+  const bool upper = storage == linalg::Storage::Upper;
+  for (int i = 0; i < n; ++i) {
+    if (eliminated_[static_cast<std::size_t>(i)]) {
+      entry(i, scale_);
+    } else {
+      k.forEachInRow(i, [&](int j, double v) {
+        if (!eliminated_[static_cast<std::size_t>(j)] && (!upper || j >= i)) {
+          entry(j, v);
+        }
+      });
+      for (auto t = dofTermStart_[static_cast<std::size_t>(i)];
+           t < dofTermStart_[static_cast<std::size_t>(i) + 1]; ++t) {
+        const auto& [r, c] = dofTerms_[static_cast<std::size_t>(t)];
+        entry(n + r, scale_ * c);
       }
     }
-    t.emplace_back(n + r, n + r, 0.0); // keep the diagonal in the pattern
+    rowEnd(i);
   }
-  Eigen::SparseMatrix<double, Eigen::RowMajor> a(n + m, n + m);
-  a.setFromTriplets(t.begin(), t.end());
+  for (int r = 0; r < m; ++r) {
+    if (!upper) {
+      for (const auto& [j, c] : rowTerms_[static_cast<std::size_t>(r)]) {
+        entry(j, scale_ * c);
+      }
+    }
+    entry(n + r, 0.0); // keep the diagonal in the pattern
+    rowEnd(n + r);
+  }
+}
+
+bool SaddleSolver::border(const StiffnessMatrix& k, linalg::Storage storage) {
+  prepareRelations();
+  const int size = dofs_.physicalCount() + static_cast<int>(rows_.size());
+  if (bordered_.sharedPattern() && borderedFor_ == k.patternId() && bordered_.storage() == storage) {
+    double* v = bordered_.values().data();
+    std::size_t at = 0;
+    walk(
+        k, storage, [&](int, double value) { v[at++] = value; }, [](int) {});
+    return false;
+  }
+  auto pattern = std::make_shared<linalg::SparsePattern>();
+  pattern->size = size;
+  pattern->storage = storage;
+  pattern->rowStart.assign(static_cast<std::size_t>(size) + 1, 0);
+  std::vector<double> values;
+  walk(
+      k, storage,
+      [&](int j, double value) {
+        pattern->columns.push_back(j);
+        values.push_back(value);
+      },
+      [&](int row) {
+        pattern->rowStart[static_cast<std::size_t>(row) + 1] =
+            static_cast<std::int64_t>(pattern->columns.size());
+      });
+  borderedFor_ = k.patternId();
+  const bool changed = !bordered_.sharedPattern() || !samePattern(*pattern, bordered_.pattern());
+  bordered_ = linalg::SparseMatrix(changed ? std::shared_ptr<const linalg::SparsePattern>(std::move(pattern))
+                                           : bordered_.sharedPattern());
+  bordered_.values() = std::move(values);
+  return changed;
+}
+
+void SaddleSolver::extractEliminatedColumns(const StiffnessMatrix& k) {
+  const int n = dofs_.physicalCount();
+  anyEliminated_ = std::find(eliminated_.begin(), eliminated_.end(), true) != eliminated_.end();
+  if (!anyEliminated_) {
+    eliminatedColumns_ = Eigen::SparseMatrix<double>();
+    return;
+  }
+  const bool upper = k.storage() == linalg::Storage::Upper;
+  std::vector<Eigen::Triplet<double>> t;
+  for (int i = 0; i < n; ++i) {
+    const bool ei = eliminated_[static_cast<std::size_t>(i)];
+    k.forEachInRow(i, [&](int j, double v) {
+      if (eliminated_[static_cast<std::size_t>(j)]) {
+        t.emplace_back(i, j, v);
+      }
+      if (upper && ei && j != i) {
+        t.emplace_back(j, i, v);
+      }
+    });
+  }
+  eliminatedColumns_.resize(n, n);
+  eliminatedColumns_.setFromTriplets(t.begin(), t.end());
+}
+
+void SaddleSolver::factorize(const Eigen::SparseMatrix<double>& k, bool checkSingular, bool symmetric) {
+  const linalg::Storage storage = symmetric ? linalg::Storage::Upper : linalg::Storage::Full;
+  const StiffnessMatrix matrix(k, storage);
+  if (checkSingular) {
+    scale_ = meanDiagonal(matrix);
+    checkSingularity(k);
+  }
+  factorize(matrix, symmetric);
+}
+
+void SaddleSolver::factorize(const StiffnessMatrix& k, bool symmetric) {
+  const auto start = Clock::now();
+  const int m = static_cast<int>(rows_.size());
   const linalg::MatrixKind kind = !symmetric ? linalg::MatrixKind::Unsymmetric
                                   : m > 0    ? linalg::MatrixKind::SymmetricIndefinite
                                              : linalg::MatrixKind::SymmetricPositiveDefinite;
-  const auto previous = pattern_;
-  linalg::SparseMatrix csr = toCsr(a, linalg::storageFor(kind), pattern_);
+  const linalg::Storage storage = linalg::storageFor(kind);
+  if (storage == linalg::Storage::Full && k.storage() == linalg::Storage::Upper) {
+    throw std::logic_error("SaddleSolver: an unsymmetric factorisation needs K stored in full");
+  }
+  scale_ = meanDiagonal(k);
+  border(k, storage);
+  extractEliminatedColumns(k);
+  timings_.bordering += secondsSince(start);
   try {
     if (!solver_ || solver_->kind() != kind) {
       solver_ = linalg::makeLinearSolver(options_, kind);
-      solver_->analyse(csr);
-    } else if (pattern_ != previous) {
-      solver_->analyse(csr);
+      analysed_.reset();
     }
-    solver_->factorise(csr);
+    if (analysed_ != bordered_.sharedPattern()) {
+      const auto t = Clock::now();
+      solver_->analyse(bordered_);
+      analysed_ = bordered_.sharedPattern();
+      timings_.analysis += secondsSince(t);
+      ++timings_.analyses;
+    }
+    const auto t = Clock::now();
+    solver_->factorise(bordered_);
+    timings_.factorisation += secondsSince(t);
   } catch (const linalg::SingularMatrixError& e) {
-    checkSingularity(k);
+    // Only now the (costly) diagnosis that names the free node and component.
+    checkSingularity(k.toEigen());
     const int eq = e.equation();
     throw UserError(
         Diagnostic::fatal(
@@ -195,7 +305,7 @@ void SaddleSolver::solve(const Eigen::VectorXd& r, const Eigen::VectorXd& g,
     }
   }
   if (any) {
-    b.head(n) -= k_ * p;
+    b.head(n) -= eliminatedColumns_ * p;
     for (int rr = 0; rr < m; ++rr) {
       for (const auto& [j, c] : rows_[static_cast<std::size_t>(rr)].terms) {
         if (eliminated_[static_cast<std::size_t>(j)]) {
@@ -209,9 +319,11 @@ void SaddleSolver::solve(const Eigen::VectorXd& r, const Eigen::VectorXd& g,
       b(i) = scale_ * p(i);
     }
   }
+  const auto start = Clock::now();
   Eigen::VectorXd x = b;
   Eigen::Map<Eigen::MatrixXd> column(x.data(), x.size(), 1);
   solver_->solve(column);
+  timings_.solve += secondsSince(start);
   if (!x.allFinite()) {
     throw UserError(Diagnostic::fatal("SOLVE_3", "the linear solve produced non-finite values")
                         .withNote("the system is probably singular or badly conditioned: check the boundary "

@@ -10,14 +10,22 @@
 // tangent is unsymmetric); s is the mean of |diag K| so that both blocks have the same magnitude. DOFs
 // imposed by AFFE_CHAR_CINE are eliminated (unit diagonal, prescribed value moved to the right-hand side).
 //
-// A singular system is diagnosed before it can produce garbage: the SPD matrix
-// K + s C^T C (with eliminated DOFs removed) is factorised with LDL^T; a pivot that loses more
-// than 8 digits relative to its diagonal names the node and component left free (UserError
-// SOLVE_1, the message code_aster's STOP_SINGULIER gives, in words). The factorisation is kept
-// for further right-hand sides (contact sub-iterations, line search).
+// The bordered matrix is built in compressed rows straight from the in-place assembled K
+// (StiffnessMatrix): its pattern is computed once and rebuilt, with the solver's symbolic
+// analysis, only when K's pattern (penalised contact pairs), the storage or the matrix kind
+// changes; at the other factorisations only the values are copied.
+//
+// A singular system is detected by the backend during the factorisation (MUMPS null pivots,
+// ICNTL(24) with CNTL(3) = 10^-NPREC; CHOLMOD not positive definite; UMFPACK singular), and only
+// then diagnosed: the SPD matrix K + s C^T C (with eliminated DOFs removed) is factorised with
+// LDL^T and a pivot that loses more than 8 digits relative to its diagonal names the node and
+// component left free (UserError SOLVE_1, the message code_aster's STOP_SINGULIER gives, in
+// words). The factorisation is kept for further right-hand sides (contact sub-iterations, line
+// search).
 
 #include "solver/mesh/Mesh.hpp"
 #include "solver/nonlinear/DofMap.hpp"
+#include "solver/nonlinear/StiffnessMatrix.hpp"
 
 #include "solver/linalg/LinearSolver.hpp"
 #include <Eigen/Sparse>
@@ -42,10 +50,25 @@ public:
   // "MUMPS" etc., after the first factorisation.
   std::string backendName() const;
 
-  // Factorises for the tangent K (physical block; `symmetric` chooses the storage). `checkSingular`
-  // runs the pivot check first (always done when the solver reports a null pivot). Throws
-  // UserError SOLVE_1 (singular, naming the DOF) / SOLVE_2 (other solver failures).
+  // Factorises for the tangent K (physical block, assembled in place; `symmetric` chooses the
+  // storage and K must then be stored upper or full, else full). Throws UserError SOLVE_1
+  // (singular, naming the DOF) / SOLVE_2 (other solver failures).
+  void factorize(const StiffnessMatrix& k, bool symmetric = true);
+  // The same for a K given as an Eigen matrix (tests, small systems). `checkSingular` runs the
+  // singularity diagnosis before the factorisation (slow: 10 to 15 times a supernodal
+  // factorisation; without it, it runs only when the backend finds a null pivot).
   void factorize(const Eigen::SparseMatrix<double>& k, bool checkSingular, bool symmetric = true);
+
+  // Seconds spent so far (phase report of the log): building the bordered matrix, symbolic
+  // analyses, numerical factorisations, solutions.
+  struct Timings {
+    double bordering = 0.0;
+    double analysis = 0.0;
+    double factorisation = 0.0;
+    double solve = 0.0;
+    int analyses = 0;
+  };
+  const Timings& timings() const { return timings_; }
 
   // Solves with the last factorisation. `r` (physical), `g` (one per row), `prescribed` (the
   // increments of the eliminated DOFs, physical size). Throws UserError SOLVE_3 on a non-finite
@@ -63,17 +86,36 @@ public:
 
 private:
   void checkSingularity(const Eigen::SparseMatrix<double>& k) const;
+  // Per physical DOF, the (relation, coefficient) of the relations holding it (free DOFs only);
+  // per relation, its (DOF, coefficient) terms on free DOFs, sorted and merged.
+  void prepareRelations();
+  // Visits the bordered matrix row by row: entry(column, value) in increasing column order,
+  // rowEnd(row) after each row.
+  template <class Entry, class RowEnd>
+  void walk(const StiffnessMatrix& k, linalg::Storage storage, Entry&& entry, RowEnd&& rowEnd) const;
+  // Builds (or refills) the bordered matrix for K; true when its pattern changed.
+  bool border(const StiffnessMatrix& k, linalg::Storage storage);
+  // K's entries coupling a DOF to an eliminated DOF, by column (moves prescribed values to the
+  // right-hand side).
+  void extractEliminatedColumns(const StiffnessMatrix& k);
 
   const DofMap& dofs_;
   const Mesh& mesh_;
   std::vector<ConstraintRow> rows_;
   std::vector<bool> eliminated_;
-  Eigen::SparseMatrix<double> k_; // the physical block of the last factorisation
+  Eigen::SparseMatrix<double> eliminatedColumns_; // K(:, eliminated) of the last factorisation
+  bool anyEliminated_ = false;
   double scale_ = 1.0;
   linalg::SolverOptions options_;
   std::unique_ptr<linalg::LinearSolver> solver_;
-  std::shared_ptr<const linalg::SparsePattern> pattern_;
+  linalg::SparseMatrix bordered_;                             // the matrix of the last factorisation
+  std::uint64_t borderedFor_ = 0;                             // StiffnessMatrix::patternId() it was built for
+  std::shared_ptr<const linalg::SparsePattern> analysed_;     // the pattern of the solver's analysis
+  std::vector<std::int64_t> dofTermStart_;                    // per physical DOF into dofTerms_
+  std::vector<std::pair<int, double>> dofTerms_;              // (relation, coefficient)
+  std::vector<std::vector<std::pair<int, double>>> rowTerms_; // per relation: (DOF, coefficient)
   int factorizations_ = 0;
+  Timings timings_;
 };
 
 } // namespace stella

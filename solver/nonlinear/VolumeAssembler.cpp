@@ -39,6 +39,9 @@ void VolumeAssembler::addSprings(const Eigen::VectorXd& uStart, const Eigen::Vec
       if (out.matrix != nullptr) {
         out.matrix->emplace_back(eq, eq, k);
       }
+      if (out.stiffness != nullptr) {
+        out.stiffness->add(eq, eq, k);
+      }
       if (out.internalForces != nullptr) {
         (*out.internalForces)(eq) += k * (uStart(eq) + du(eq));
       }
@@ -84,7 +87,9 @@ AssemblyStatus VolumeAssembler::run(const Eigen::VectorXd& uStart, const Eigen::
   std::vector<Eigen::MatrixXd> tangents;
   Eigen::MatrixXd ke;
   Eigen::VectorXd fe;
-  for (CellId c : cells_) {
+  const bool wantMatrix = out.matrix != nullptr || out.stiffness != nullptr;
+  for (std::size_t index = 0; index < cells_.size(); ++index) {
+    const CellId c = cells_[index];
     const fem::Modelling m = model_.cell(c).modelling;
     const int ns = fem::strainSize(m);
     try {
@@ -114,7 +119,7 @@ AssemblyStatus VolumeAssembler::run(const Eigen::VectorXd& uStart, const Eigen::
       auto& t = tangents[static_cast<std::size_t>(q)];
       const auto varStart = start.internal.entity(p).subspan(0, nv);
       auto s = behaviour::integrateInModelling(b, m, option, row(start.strain, p), deps, row(start.stress, p),
-                                               varStart, sigma, vari, out.matrix ? &t : nullptr);
+                                               varStart, sigma, vari, wantMatrix ? &t : nullptr);
       if (s == behaviour::IntegrationStatus::Failed && !status.failedCell) {
         status.failedCell = c;
       }
@@ -141,8 +146,13 @@ AssemblyStatus VolumeAssembler::run(const Eigen::VectorXd& uStart, const Eigen::
         (*out.internalForces)(dofs[i]) += fe(static_cast<Eigen::Index>(i));
       }
     }
-    if (out.matrix != nullptr) {
+    if (wantMatrix) {
       fem::stiffness(kin, tangents, ke);
+    }
+    if (out.stiffness != nullptr) {
+      out.stiffness->addCell(index, ke);
+    }
+    if (out.matrix != nullptr) {
       for (std::size_t i = 0; i < dofs.size(); ++i) {
         for (std::size_t j = 0; j < dofs.size(); ++j) {
           out.matrix->emplace_back(dofs[i], dofs[j],

@@ -1,14 +1,16 @@
 #pragma once
 // The loop over the model's volume cells: kinematics, behaviour integration at every Gauss
 // point, element internal forces B^T sigma and tangents B^T D B, scattered into global vectors
-// and matrix triplets (physical DOFs only); then the discrete springs (AFFE_CARA_ELEM K_T_D_N), whose
-// constant stiffness k adds k to the matrix and k (uStart + du) to the internal forces.
+// and into the stiffness matrix in place (StiffnessMatrix: precomputed positions; or as triplets,
+// the slow path kept for small tests) (physical DOFs only); then the discrete springs (AFFE_CARA_ELEM
+// K_T_D_N), whose constant stiffness k adds k to the matrix and k (uStart + du) to the internal forces.
 
 #include "solver/behaviour/Behaviour.hpp"
 #include "solver/model/ElementCharacteristics.hpp"
 #include "solver/nonlinear/CellBehaviours.hpp"
 #include "solver/nonlinear/DofMap.hpp"
 #include "solver/nonlinear/PointState.hpp"
+#include "solver/nonlinear/StiffnessMatrix.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -21,6 +23,7 @@ struct AssemblyOutput {
   std::vector<Eigen::Triplet<double>>* matrix = nullptr; // tangent entries (null: not wanted)
   Eigen::VectorXd* internalForces = nullptr;             // physical size (null: not wanted)
   PointState* end = nullptr;                             // state at the end (null: not wanted)
+  StiffnessMatrix* stiffness = nullptr; // tangent added in place (null: not wanted); built on cells()
 };
 
 // The first cell whose behaviour failed to integrate (a step-cutting event), if any.
@@ -42,6 +45,8 @@ public:
 
   // Element DOFs (global equations) of a cell.
   void cellDofs(CellId c, std::vector<int>& dofs) const;
+  // The volume cells in assembly order (the cell list of the StiffnessMatrix).
+  const std::vector<CellId>& cells() const { return cells_; }
 
 private:
   void addSprings(const Eigen::VectorXd& uStart, const Eigen::VectorXd& du, AssemblyOutput out) const;

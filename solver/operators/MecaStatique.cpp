@@ -12,6 +12,7 @@
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 
+#include <chrono>
 #include <fmt/format.h>
 
 namespace stella {
@@ -49,7 +50,10 @@ Value runMecaStatique(OperatorCall& call) {
   auto excitations = readExcitations(kw);
   std::vector<std::string> relations(model->cells.size(), "ELAS");
   auto cara = readCaraElem(kw);
+  const auto numberingStart = std::chrono::steady_clock::now();
   MechanicalSystem system(model, materials, excitations, relations, call.location, cara);
+  system.phases().numbering +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - numberingStart).count();
   system.solver().setOptions(readSolverOptions(kw));
   const bool withStress = kw.textOr("OPTION", "SIEF_ELGA") == "SIEF_ELGA";
   auto& msg = call.session.message();
@@ -81,11 +85,17 @@ Value runMecaStatique(OperatorCall& call) {
                                                            : "symmetric positive definite");
       first = false;
     }
+    PhaseClock clock(system.phases().post);
     ResultStep& step = result->addStep(t, 1);
     storeMechanicalFields(step, *model, system.dofs(), s.displacement, s.state, withStress, false);
     msg << fmt::format("   stored NUME_ORDRE {} at INST {}: max |u| = {:.6e}\n", step.number, t,
                        s.displacement.size() ? s.displacement.cwiseAbs().maxCoeff() : 0.0);
   }
+  PhaseTimes phases = system.phases();
+  const auto& solverTimes = system.solver().timings();
+  phases.factorisation = solverTimes.bordering + solverTimes.analysis + solverTimes.factorisation;
+  phases.solve = solverTimes.solve;
+  msg << formatPhases(phases, solverTimes.analyses);
   rememberLoads(result, excitations);
   return call.makeConcept(result);
 }

@@ -1,15 +1,16 @@
-// Phase timings of MECA_STATIQUE's real path (what a .comm runs): Mesh -> Model -> MechanicalSystem
-// (DOF numbering, behaviours, constraint rows) -> VolumeAssembler (element stiffness as matrix
-// triplets, then the compressed matrix) -> SaddleSolver (singularity check + factorisation) ->
+// Phase timings of MECA_STATIQUE's path without the command layer: Mesh -> Model -> MechanicalSystem
+// (DOF numbering, behaviours, constraint rows, matrix pattern) -> VolumeAssembler (element
+// stiffness added in place) -> SaddleSolver (bordered matrix, analysis, factorisation) ->
 // solve -> post (stresses at every Gauss point), with the peak memory after each phase.
 // The clamped face x = 0 is eliminated (AFFE_CHAR_CINE: SPD, CHOLMOD for MULT_FRONT) or dualised
 // (`lagrange`: DDL_IMPO, symmetric indefinite); unit nodal forces on the face x = 1.
 //
-//   stella-bench-system CASE DIVISIONS SOLVER [lagrange] [nocheck]
+//   stella-bench-system CASE DIVISIONS SOLVER [lagrange] [old]
 //     CASE      hexa8 | tetra10 | quad4 (plane strain) | quad8
 //     DIVISIONS hexahedra (quadrangles) per side of the unit cube (square)
 //     SOLVER    MUMPS | MULT_FRONT
-//     nocheck   factorise without the singularity pre-check (to measure what it costs)
+//     old       the former path: triplets and the singularity diagnosis before the factorisation
+//               (default: the in-place assembly into the StiffnessMatrix pattern, MECA_STATIQUE's)
 // Output: one line "key=value ..." per run.
 
 #include "solver/fem/BoxMesh.hpp"
@@ -81,17 +82,17 @@ std::shared_ptr<MaterialField> steel(std::shared_ptr<const Mesh> mesh) {
 int main(int argc, char** argv) {
   if (argc < 4) {
     std::cerr << "usage: stella-bench-system hexa8|tetra10|quad4|quad8 DIVISIONS MUMPS|MULT_FRONT [lagrange] "
-                 "[nocheck]\n";
+                 "[old]\n";
     return 2;
   }
   const std::string kase = argv[1];
   const int n = std::atoi(argv[2]);
   const std::string solverName = argv[3];
   bool lagrange = false;
-  bool check = true;
+  bool oldPath = false;
   for (int i = 4; i < argc; ++i) {
     lagrange = lagrange || std::strcmp(argv[i], "lagrange") == 0;
-    check = check && std::strcmp(argv[i], "nocheck") != 0;
+    oldPath = oldPath || std::strcmp(argv[i], "old") == 0;
   }
   const CellType type = kase == "hexa8"     ? CellType::HEXA8
                         : kase == "tetra10" ? CellType::TETRA10
@@ -143,20 +144,51 @@ int main(int argc, char** argv) {
   const int np = system.dofs().physicalCount();
   const PointState zero = zeroPointState(system.model(), system.behaviours().maxInternalVariables());
   const Eigen::VectorXd none = Eigen::VectorXd::Zero(np);
-  std::vector<Eigen::Triplet<double>> triplets;
-  system.assembler().run(none, none, zero, behaviour::Option::ElasticTangent, {&triplets, nullptr, nullptr});
-  const double tElements = clock.lap();
-  const std::size_t tripletCount = triplets.size();
-  const Eigen::SparseMatrix<double> k = system.matrix(triplets);
-  std::vector<Eigen::Triplet<double>>().swap(triplets);
-  const Eigen::VectorXd f = system.externalForces(0.0);
-  const Eigen::VectorXd g = system.relationValues(0.0);
-  const Eigen::VectorXd p = system.eliminatedValues(0.0);
-  const double tAssembly = tElements + clock.lap();
-  const double mAssembly = peakMegabytes();
-
-  system.solver().factorize(k, check, true);
-  const double tFactorise = clock.lap();
+  double tPattern = 0.0;
+  std::int64_t nnz = 0;
+  std::size_t matrixBytes = 0;
+  Eigen::VectorXd f;
+  Eigen::VectorXd g;
+  Eigen::VectorXd p;
+  double tElements = 0.0;
+  double tAssembly = 0.0;
+  double tFactorise = 0.0;
+  double mAssembly = 0.0;
+  if (oldPath) {
+    // The former path: element matrices as triplets, then the compressed matrix; the singularity
+    // diagnosis factorised first (what MECA_STATIQUE did before the in-place assembly).
+    std::vector<Eigen::Triplet<double>> triplets;
+    system.assembler().run(none, none, zero, behaviour::Option::ElasticTangent,
+                           {&triplets, nullptr, nullptr});
+    tElements = clock.lap();
+    const Eigen::SparseMatrix<double> k = system.matrix(triplets);
+    std::vector<Eigen::Triplet<double>>().swap(triplets);
+    nnz = k.nonZeros();
+    f = system.externalForces(0.0);
+    g = system.relationValues(0.0);
+    p = system.eliminatedValues(0.0);
+    tAssembly = tElements + clock.lap();
+    mAssembly = peakMegabytes();
+    system.solver().factorize(k, true, true);
+    tFactorise = clock.lap();
+  } else {
+    StiffnessMatrix& k = system.stiffness(true);
+    tPattern = clock.lap();
+    system.assembler().run(none, none, zero, behaviour::Option::ElasticTangent,
+                           {nullptr, nullptr, nullptr, &k});
+    tElements = clock.lap();
+    nnz = k.toEigen().nonZeros();
+    matrixBytes = k.memoryBytes();
+    clock.lap();
+    f = system.externalForces(0.0);
+    g = system.relationValues(0.0);
+    p = system.eliminatedValues(0.0);
+    tAssembly = tElements + clock.lap();
+    mAssembly = peakMegabytes();
+    system.solver().factorize(k, true);
+    tFactorise = clock.lap();
+  }
+  const double tNumberingAll = tNumbering + tPattern;
   const double mFactorise = peakMegabytes();
 
   Eigen::VectorXd u;
@@ -170,17 +202,18 @@ int main(int argc, char** argv) {
   const double tPost = clock.lap();
   const double mPost = peakMegabytes();
 
-  const double total = tNumbering + tAssembly + tFactorise + tSolve + tPost;
-  const double other = tNumbering + tAssembly + tPost;
+  const double total = tNumberingAll + tAssembly + tFactorise + tSolve + tPost;
+  const double other = tNumberingAll + tAssembly + tPost;
   std::cout << "case=" << kase << " divisions=" << n << " solver=" << solverName
             << " backend=" << system.solver().backendName() << " lagrange=" << (lagrange ? 1 : 0)
-            << " check=" << (check ? 1 : 0) << " dofs=" << system.dofs().size()
-            << " cells=" << mesh->cellCount() << " triplets=" << tripletCount << " nnz=" << k.nonZeros()
-            << " t_mesh=" << tMesh << " t_numbering=" << tNumbering << " t_assembly=" << tAssembly
-            << " t_elements=" << tElements << " t_factorise=" << tFactorise << " t_solve=" << tSolve
-            << " t_post=" << tPost << " mem_mesh=" << mMesh << " mem_numbering=" << mNumbering
-            << " mem_assembly=" << mAssembly << " mem_factorise=" << mFactorise << " mem_solve=" << mSolve
-            << " mem_post=" << mPost << " total=" << total << " other_share=" << other / total
-            << " max_u=" << u.cwiseAbs().maxCoeff() << "\n";
+            << " path=" << (oldPath ? "old" : "new") << " dofs=" << system.dofs().size()
+            << " cells=" << mesh->cellCount() << " nnz=" << nnz << " matrix_mb=" << matrixBytes / 1048576.0
+            << " t_mesh=" << tMesh << " t_numbering=" << tNumberingAll << " t_pattern=" << tPattern
+            << " t_assembly=" << tAssembly << " t_elements=" << tElements << " t_factorise=" << tFactorise
+            << " t_solve=" << tSolve << " t_post=" << tPost << " mem_mesh=" << mMesh
+            << " mem_numbering=" << mNumbering << " mem_assembly=" << mAssembly
+            << " mem_factorise=" << mFactorise << " mem_solve=" << mSolve << " mem_post=" << mPost
+            << " total=" << total << " other_share=" << other / total << " max_u=" << u.cwiseAbs().maxCoeff()
+            << "\n";
   return 0;
 }

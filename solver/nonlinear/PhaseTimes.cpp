@@ -1,0 +1,28 @@
+// PhaseTimes: peak memory and the phase lines of the message file.
+
+#include "solver/nonlinear/PhaseTimes.hpp"
+
+#include <fmt/format.h>
+#include <sys/resource.h>
+
+namespace stella {
+
+double peakResidentMegabytes() {
+  rusage usage{};
+  if (getrusage(RUSAGE_SELF, &usage) != 0) {
+    return 0.0;
+  }
+  return static_cast<double>(usage.ru_maxrss) / 1024.0; // kilobytes on Linux
+}
+
+std::string formatPhases(const PhaseTimes& t, int analyses) {
+  const double total = t.total();
+  const double other = t.numbering + t.assembly + t.post;
+  return fmt::format("   phases (s): numbering {:.3f}, assembly {:.3f}, factorisation {:.3f} ({} analysis), "
+                     "solve {:.3f}, post {:.3f}; total {:.3f}, outside factorisation and solve {:.1f} %\n"
+                     "   peak memory: {:.0f} MB\n",
+                     t.numbering, t.assembly, t.factorisation, analyses, t.solve, t.post, total,
+                     total > 0.0 ? 100.0 * other / total : 0.0, peakResidentMegabytes());
+}
+
+} // namespace stella

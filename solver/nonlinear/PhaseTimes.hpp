@@ -1,0 +1,43 @@
+#pragma once
+// Elapsed time of the phases of a static analysis, for the message file and the performance
+// report (doc/bench/fem-performance.md): numbering (DOFs, relations, matrix pattern), assembly
+// (element matrices into K, load vectors), factorisation (bordered matrix, symbolic analysis,
+// numerical factorisation), solve (triangular solutions), post (stresses at the Gauss points and
+// fields stored), and the peak resident memory of the process.
+
+#include <chrono>
+#include <string>
+
+namespace stella {
+
+struct PhaseTimes {
+  double numbering = 0.0;
+  double assembly = 0.0;
+  double factorisation = 0.0;
+  double solve = 0.0;
+  double post = 0.0;
+  double total() const { return numbering + assembly + factorisation + solve + post; }
+};
+
+// Peak resident set size of the process so far, in megabytes (getrusage).
+double peakResidentMegabytes();
+
+// "   phases (s): numbering 0.012, assembly 0.350, ..." lines for the message file.
+std::string formatPhases(const PhaseTimes& t, int analyses);
+
+// Adds the seconds elapsed since its construction to a counter when destroyed.
+class PhaseClock {
+public:
+  explicit PhaseClock(double& counter) : counter_(counter), start_(std::chrono::steady_clock::now()) {}
+  ~PhaseClock() {
+    counter_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+  PhaseClock(const PhaseClock&) = delete;
+  PhaseClock& operator=(const PhaseClock&) = delete;
+
+private:
+  double& counter_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+} // namespace stella
