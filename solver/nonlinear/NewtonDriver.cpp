@@ -3,12 +3,43 @@
 
 #include "solver/nonlinear/NewtonDriver.hpp"
 
+#include "interpreter/Diagnostics.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
 
 namespace stella {
+
+namespace {
+
+// RESI_GLOB_RELA of an iteration: max |residual| / max |external forces - reactions|. When that
+// reference vanishes (below the round-off of the last reference, or of 1) the relative criterion
+// has no scale: as code_aster does (U4.51.04 §6, alarm MECANONLINE2_98), RESI_GLOB_RELA is shown
+// as -1 and the residual is tested in absolute, against RESI_GLOB_MAXI when given, else
+// RESI_GLOB_RELA x the reference of the last step converged under load; the relative test
+// returns to force as soon as the load does.
+struct RelativeTest {
+  double rela = 0.0;
+  bool ok = false;
+  bool nullLoad = false;
+  double tolerance = 0.0; // absolute, when nullLoad
+};
+
+RelativeTest relativeTest(double maxi, double denominator, double lastReference, const NewtonSettings& s) {
+  if (s.resiGlobRela <= 0.0) {
+    return {denominator > 0.0 ? maxi / denominator : -1.0, true, false, 0.0};
+  }
+  const double roundOff = std::max(1.0e-12 * lastReference, std::numeric_limits<double>::epsilon());
+  if (denominator > roundOff) {
+    return {maxi / denominator, maxi <= s.resiGlobRela * denominator, false, 0.0};
+  }
+  const double tolerance = s.resiGlobMaxi > 0.0 ? s.resiGlobMaxi : s.resiGlobRela * lastReference;
+  return {-1.0, maxi <= tolerance, true, tolerance};
+}
+
+} // namespace
 
 NewtonDriver::NewtonDriver(MechanicalSystem& system, NewtonSettings settings, std::ostream& log)
     : system_(system), settings_(std::move(settings)), log_(log) {}
@@ -197,6 +228,18 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
   const Eigen::VectorXd g = system_.relationValues(time);
   const Eigen::VectorXd imposed = system_.eliminatedValues(time);
   const auto& eliminated = system_.solver().eliminated();
+  if (forceScale_ <= 0.0 && n > 0 && start.multipliers.size() == system_.dofs().lagrangeCount()) {
+    // No step converged under load yet: the forces and reactions of the initial state (ETAT_INIT)
+    // give the reference of a step whose load vanishes.
+    Eigen::VectorXd initial =
+        system_.externalForces(start.time) - system_.solver().transposeTimes(start.multipliers);
+    for (int i = 0; i < n; ++i) {
+      if (eliminated[static_cast<std::size_t>(i)]) {
+        initial(i) = 0.0;
+      }
+    }
+    forceScale_ = initial.cwiseAbs().maxCoeff();
+  }
   Eigen::VectorXd du = Eigen::VectorXd::Zero(n);
   Eigen::VectorXd lambda = start.multipliers;
   StepOutcome out;
@@ -216,6 +259,7 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
   // The geometric loop of a constraint extends the iteration budget by ITER_GLOB_MAXI per
   // re-pairing; the constraint bounds the number of re-pairings (ITER_GEOM_MAXI).
   int lastIteration = settings_.iterGlobMaxi;
+  bool nullLoadNoted = false;
   for (int iter = 0; iter <= lastIteration; ++iter) {
     const bool updateMatrix = settings_.tangentMatrix && settings_.reacIter > 0 && iter < lastIteration &&
                               ((iter + 1) % settings_.reacIter == 0);
@@ -242,14 +286,33 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
     Eigen::Index where = 0;
     const double maxi = n > 0 ? r.cwiseAbs().maxCoeff(&where) : 0.0;
     const double denominator = n > 0 ? reference.cwiseAbs().maxCoeff() : 0.0;
-    // When the forces and reactions vanish (a structure unloaded to zero stress) the relative
-    // residual has no scale: the largest reference of the converged steps gives it.
-    const double scale = std::max(denominator, 1.0e-6 * forceScale_);
-    const double rela = scale > 0.0 ? maxi / scale : maxi;
+    const RelativeTest test = relativeTest(maxi, denominator, forceScale_, settings_);
+    const double rela = test.rela;
+    if (test.nullLoad && !nullLoadNoted) {
+      nullLoadNoted = true;
+      if (forceScale_ <= 0.0 && settings_.resiGlobMaxi <= 0.0 && maxi > 0.0) {
+        throw UserError(
+            Diagnostic::fatal("SNL_11",
+                              fmt::format("INST {}: the external forces and the reactions are zero, so "
+                                          "RESI_GLOB_RELA has no reference, and no earlier step converged "
+                                          "under load gives one (the residual is {:.3e})",
+                                          time, maxi))
+                .withNote("check that the load should vanish at this instant; otherwise give an absolute "
+                          "criterion, CONVERGENCE=_F(RESI_GLOB_MAXI=...), as code_aster requires"));
+      }
+      log_ << fmt::format(
+          "   |      | zero load and reactions: RESI_GLOB_RELA shown as -1, test in absolute, "
+          "RESI_GLOB_MAXI <= {:.3e}{}\n",
+          test.tolerance,
+          settings_.resiGlobMaxi > 0.0 ? " (given)"
+                                       : fmt::format(" = RESI_GLOB_RELA x {:.3e}, the reference "
+                                                     "of the last step converged under load",
+                                                     forceScale_));
+    }
     const std::string at =
         n > 0 ? system_.dofs().describe(static_cast<int>(where), *system_.model().mesh) : "-";
-    const bool ok = (settings_.resiGlobRela <= 0.0 || rela <= settings_.resiGlobRela) &&
-                    (settings_.resiGlobMaxi <= 0.0 || maxi <= settings_.resiGlobMaxi) && std::isfinite(maxi);
+    const bool ok =
+        test.ok && (settings_.resiGlobMaxi <= 0.0 || maxi <= settings_.resiGlobMaxi) && std::isfinite(maxi);
     log_ << fmt::format("   | {:4d} | {:14.6e} | {:14.6e} | {:<23} | {:<9} |{}{}\n", iter, rela, maxi,
                         at.substr(0, 23), matrixNote,
                         rhoColumn ? fmt::format(" {:<8.4g} |", rho) : std::string(),
@@ -266,7 +329,9 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
     }
     if (accepted) {
       out.converged = true;
-      forceScale_ = std::max(forceScale_, denominator);
+      if (!test.nullLoad) {
+        forceScale_ = denominator;
+      }
       end.time = time;
       end.displacement = start.displacement + du;
       end.multipliers = lambda;

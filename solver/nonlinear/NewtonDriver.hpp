@@ -108,7 +108,7 @@ private:
   std::ostream& log_;
   StepConstraint* constraint_ = nullptr;
   bool elasticFactorized_ = false;
-  double forceScale_ = 0.0; // largest RESI_GLOB_RELA reference of the converged steps
+  double forceScale_ = 0.0; // RESI_GLOB_RELA reference of the last step converged under load
   int convergedSteps_ = 0;
   bool factorized_ = false;
   Eigen::VectorXd lastIncrement_; // of the last converged step (EXTRAPOLE)
