@@ -229,7 +229,13 @@ void ContactConstraint::reportStep(std::ostream& log) const {
   log << fmt::format("   Nombre de liaisons de contact : {}\n", activeLinks_);
   log << fmt::format("   interpenetration maximale : {:.6e}\n", maxInterpenetration_);
   for (const std::string& a : stepAlarms_) {
-    log << "   <A> " << a << '\n';
+    // "ID: text" -> an alarm of the session (counted in the job diagnostic) when there is a sink
+    const std::size_t colon = a.find(": ");
+    const bool named = colon != std::string::npos;
+    if (!emitAlarm(Diagnostic::alarm(named ? a.substr(0, colon) : std::string("CONTACT"),
+                                     named ? a.substr(colon + 2) : a, definition_->location))) {
+      log << "   <A> " << a << '\n';
+    }
   }
 }
 

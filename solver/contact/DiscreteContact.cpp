@@ -22,7 +22,8 @@ using Eigen::Index;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-// Columns K^-1 A_i^T, computed in blocks of NB_RESOL right-hand sides and kept.
+// Columns of the Schur complement S(:, i) = A K^-1 A_i^T, computed in blocks of NB_RESOL
+// right-hand sides and kept (m entries each).
 class SchurColumns {
 public:
   SchurColumns(const SparseRows& a, StiffnessInverse& k, int block)
@@ -36,6 +37,11 @@ public:
         missing.push_back(i);
       }
     }
+    if (missing.empty()) {
+      return;
+    }
+    const Index first = columns_.cols();
+    columns_.conservativeResize(a_.rows(), first + static_cast<Index>(missing.size()));
     for (std::size_t b = 0; b < missing.size(); b += static_cast<std::size_t>(block_)) {
       const std::size_t e = std::min(missing.size(), b + static_cast<std::size_t>(block_));
       MatrixXd rhs = MatrixXd::Zero(a_.cols(), static_cast<Index>(e - b));
@@ -45,23 +51,73 @@ public:
         }
       }
       k_.solve(rhs);
+      columns_.middleCols(first + static_cast<Index>(b), static_cast<Index>(e - b)) = a_ * rhs;
       for (std::size_t j = b; j < e; ++j) {
-        slot_[static_cast<std::size_t>(missing[j])] = static_cast<Index>(columns_.size());
-        columns_.push_back(rhs.col(static_cast<Index>(j - b)));
+        slot_[static_cast<std::size_t>(missing[j])] = first + static_cast<Index>(j);
       }
     }
   }
-  const VectorXd& column(Index link) const {
-    return columns_[static_cast<std::size_t>(slot_[static_cast<std::size_t>(link)])];
-  }
-  double entry(Index i, Index j) const { return a_.row(i).dot(column(j)); }
+  // S(i, j) and the column S(:, j).
+  double entry(Index i, Index j) const { return columns_(i, slot(j)); }
+  auto column(Index j) const { return columns_.col(slot(j)); }
 
 private:
+  Index slot(Index link) const { return slot_[static_cast<std::size_t>(link)]; }
   const SparseRows& a_;
   StiffnessInverse& k_;
   int block_;
   std::vector<Index> slot_;
-  std::vector<VectorXd> columns_;
+  MatrixXd columns_;
+};
+
+// Cholesky factor L of S restricted to the active links, extended one link at a time.
+class ActiveCholesky {
+public:
+  explicit ActiveCholesky(const SchurColumns& s) : s_(s) {}
+  const std::vector<Index>& links() const { return links_; }
+  // Adds a link; false (nothing changed) when its pivot vanishes: the active links are then
+  // linearly dependent.
+  bool add(Index link) {
+    const auto n = static_cast<Index>(links_.size());
+    VectorXd y(n);
+    for (Index a = 0; a < n; ++a) {
+      y(a) = s_.entry(links_[static_cast<std::size_t>(a)], link);
+    }
+    if (n > 0) {
+      l_.topLeftCorner(n, n).triangularView<Eigen::Lower>().solveInPlace(y);
+    }
+    const double diagonal = s_.entry(link, link);
+    const double pivot = diagonal - y.squaredNorm();
+    scale_ = std::max(scale_, std::abs(diagonal));
+    if (!(pivot > 1e-12 * scale_)) {
+      return false;
+    }
+    if (l_.rows() < n + 1) {
+      const Index capacity = std::max<Index>(2 * n, 16);
+      MatrixXd grown = MatrixXd::Zero(capacity, capacity);
+      grown.topLeftCorner(n, n) = l_.topLeftCorner(n, n);
+      l_.swap(grown);
+    }
+    l_.row(n).head(n) = y.transpose();
+    l_(n, n) = std::sqrt(pivot);
+    links_.push_back(link);
+    return true;
+  }
+  void clear() { links_.clear(); }
+  // S_active^-1 b (b ordered like links()).
+  VectorXd solve(const VectorXd& b) const {
+    const auto n = static_cast<Index>(links_.size());
+    VectorXd x = b;
+    l_.topLeftCorner(n, n).triangularView<Eigen::Lower>().solveInPlace(x);
+    l_.topLeftCorner(n, n).triangularView<Eigen::Lower>().transpose().solveInPlace(x);
+    return x;
+  }
+
+private:
+  const SchurColumns& s_;
+  std::vector<Index> links_;
+  MatrixXd l_;
+  double scale_ = 0.0;
 };
 
 double maxInterpenetration(const VectorXd& gap) {
@@ -74,104 +130,124 @@ VectorXd applyKinvAt(const SparseRows& a, StiffnessInverse& k, const VectorXd& l
   return rhs.col(0);
 }
 
+// Rounds of the active-set method that move every violated link and every negative multiplier
+// at once before falling back to one change per iteration.
+constexpr int blockRounds = 20;
+
 } // namespace
 
 DualResult solveActiveSet(const ContactProblem& p, StiffnessInverse& k, const VectorXd& du0,
-                          const DualOptions& o) {
+                          const DualOptions& o, const DualStart* start) {
   const Index m = p.A.rows();
   const int solvesBefore = k.solves;
   const VectorXd q = p.gap + p.A * du0;
   const double scale = m > 0 ? std::max(q.cwiseAbs().maxCoeff(), std::numeric_limits<double>::min()) : 1.0;
   const double tol = o.tolerance > 0.0 ? o.tolerance : 1e-10 * scale;
   SchurColumns cols(p.A, k, o.rightHandSidesPerSolve);
+  ActiveCholesky chol(cols);
   std::vector<char> active(static_cast<std::size_t>(m), 0);
   std::vector<char> excluded(static_cast<std::size_t>(m), 0);
-  std::vector<Index> set;
+  // Links waiting to enter, most violated first (bilateral ones and the start's before).
+  std::vector<Index> entering;
   for (Index i = 0; i < m; ++i) {
-    if (p.isBilateral(i) || q(i) < -tol) {
-      active[static_cast<std::size_t>(i)] = 1;
-      set.push_back(i);
+    const bool started = start != nullptr && start->lambda.size() == m && start->lambda(i) > 0.0;
+    if (p.isBilateral(i) || started || q(i) < -tol) {
+      entering.push_back(i);
     }
   }
+  const auto priority = [&](Index i) {
+    const bool first =
+        p.isBilateral(i) || (start != nullptr && start->lambda.size() == m && start->lambda(i) > 0.0);
+    return std::pair<int, double>(first ? 0 : 1, q(i));
+  };
+  std::stable_sort(entering.begin(), entering.end(),
+                   [&](Index a, Index b) { return priority(a) < priority(b); });
   DualResult r;
   r.lambda = VectorXd::Zero(m);
-  VectorXd w = VectorXd::Zero(du0.size());
-  Index lastAdded = set.empty() ? -1 : set.back();
-  const int maxIterations = std::max(1, o.iterationFactor) * static_cast<int>(std::max<Index>(m, 1)) + 1;
+  VectorXd gap = q;
   VectorXd lambdaSet;
+  const int maxIterations = std::max(1, o.iterationFactor) * static_cast<int>(std::max<Index>(m, 1)) + 1;
   for (r.iterations = 1; r.iterations <= maxIterations; ++r.iterations) {
-    cols.ensure(set);
+    cols.ensure(entering);
+    for (Index i : entering) {
+      if (chol.add(i)) {
+        active[static_cast<std::size_t>(i)] = 1;
+        continue;
+      }
+      if (o.stopIfSingular) {
+        throw SingularContactError(static_cast<int>(i));
+      }
+      excluded[static_cast<std::size_t>(i)] = 1;
+    }
+    entering.clear();
+    const std::vector<Index>& set = chol.links();
     const auto na = static_cast<Index>(set.size());
-    MatrixXd s(na, na);
     VectorXd rhs(na);
     for (Index a = 0; a < na; ++a) {
       rhs(a) = -q(set[static_cast<std::size_t>(a)]);
-      for (Index b = 0; b < na; ++b) {
-        s(a, b) = cols.entry(set[static_cast<std::size_t>(a)], set[static_cast<std::size_t>(b)]);
-      }
     }
-    lambdaSet = VectorXd::Zero(na);
-    if (na > 0) {
-      Eigen::LDLT<MatrixXd> ldlt(s);
-      const VectorXd d = ldlt.vectorD().cwiseAbs();
-      if (ldlt.info() != Eigen::Success || d.minCoeff() <= 1e-12 * d.maxCoeff()) {
-        const Index culprit = lastAdded >= 0 ? lastAdded : set.back();
-        if (o.stopIfSingular) {
-          throw SingularContactError(static_cast<int>(culprit));
-        }
-        excluded[static_cast<std::size_t>(culprit)] = 1;
-        active[static_cast<std::size_t>(culprit)] = 0;
-        set.erase(std::find(set.begin(), set.end(), culprit));
-        lastAdded = -1;
-        continue;
-      }
-      lambdaSet = ldlt.solve(rhs);
-    }
-    // Remove the most negative multiplier (unilateral links only).
-    Index worst = -1;
-    double worstValue = 0.0;
+    lambdaSet = na > 0 ? chol.solve(rhs) : VectorXd();
+    // Negative multipliers of unilateral links leave (all of them, or the most negative one).
+    const bool block = r.iterations <= blockRounds;
     const double lambdaScale = na > 0 ? lambdaSet.cwiseAbs().maxCoeff() : 0.0;
+    std::vector<Index> leaving;
+    Index worst = -1;
     for (Index a = 0; a < na; ++a) {
       const Index i = set[static_cast<std::size_t>(a)];
-      if (!p.isBilateral(i) && lambdaSet(a) < -1e-13 * lambdaScale && lambdaSet(a) < worstValue) {
-        worstValue = lambdaSet(a);
-        worst = a;
+      if (!p.isBilateral(i) && lambdaSet(a) < -1e-13 * lambdaScale) {
+        leaving.push_back(a);
+        if (worst < 0 || lambdaSet(a) < lambdaSet(worst)) {
+          worst = a;
+        }
       }
     }
-    if (worst >= 0) {
-      active[static_cast<std::size_t>(set[static_cast<std::size_t>(worst)])] = 0;
-      set.erase(set.begin() + worst);
-      lastAdded = -1;
+    if (!leaving.empty()) {
+      if (!block) {
+        leaving.assign(1, worst);
+      }
+      std::vector<char> drop(static_cast<std::size_t>(na), 0);
+      for (Index a : leaving) {
+        drop[static_cast<std::size_t>(a)] = 1;
+        active[static_cast<std::size_t>(set[static_cast<std::size_t>(a)])] = 0;
+      }
+      std::vector<Index> kept;
+      for (Index a = 0; a < na; ++a) {
+        if (drop[static_cast<std::size_t>(a)] == 0) {
+          kept.push_back(set[static_cast<std::size_t>(a)]);
+        }
+      }
+      chol.clear(); // refactorised from the kept links (in their order) at the next iteration
+      entering = std::move(kept);
       continue;
     }
-    w.setZero();
+    gap = q;
     for (Index a = 0; a < na; ++a) {
-      w += lambdaSet(a) * cols.column(set[static_cast<std::size_t>(a)]);
+      gap += lambdaSet(a) * cols.column(set[static_cast<std::size_t>(a)]);
     }
-    const VectorXd gap = q + p.A * w;
-    Index add = -1;
-    double most = -tol;
     for (Index i = 0; i < m; ++i) {
-      if (!active[static_cast<std::size_t>(i)] && !excluded[static_cast<std::size_t>(i)] && gap(i) < most) {
-        most = gap(i);
-        add = i;
+      if (!active[static_cast<std::size_t>(i)] && !excluded[static_cast<std::size_t>(i)] && gap(i) < -tol) {
+        entering.push_back(i);
       }
     }
-    if (add < 0) {
+    if (entering.empty()) {
       r.converged = true;
-      r.finalGap = gap;
       break;
     }
-    active[static_cast<std::size_t>(add)] = 1;
-    set.push_back(add);
-    lastAdded = add;
+    std::sort(entering.begin(), entering.end(), [&](Index a, Index b) { return gap(a) < gap(b); });
+    if (!block) {
+      entering.resize(1);
+    }
   }
-  for (std::size_t a = 0; a < set.size(); ++a) {
+  const std::vector<Index>& set = chol.links();
+  for (std::size_t a = 0; a < set.size() && a < static_cast<std::size_t>(lambdaSet.size()); ++a) {
     r.lambda(set[a]) = lambdaSet(static_cast<Index>(a));
   }
-  r.du = du0 + w;
-  if (!r.converged) {
-    r.finalGap = q + p.A * w;
+  r.finalGap = gap;
+  if (o.computeDisplacement) {
+    r.du = du0;
+    if (r.lambda.size() > 0 && r.lambda.cwiseAbs().maxCoeff() > 0.0) {
+      r.du += applyKinvAt(p.A, k, r.lambda);
+    }
   }
   r.activeLinks = static_cast<int>(set.size());
   r.solves = k.solves - solvesBefore;
@@ -240,15 +316,29 @@ VectorXd dirichlet(const GcpState& st, const VectorXd& g, const std::vector<char
 
 } // namespace
 
+int gcpIterationCap(Index links, int iterGcpMaxi) {
+  return std::max(10 * static_cast<int>(std::max<Index>(links, 1)), iterGcpMaxi);
+}
+
 DualResult solveProjectedGradient(const ContactProblem& p, StiffnessInverse& k, const VectorXd& du0,
-                                  const DualOptions& o) {
+                                  const DualOptions& o, const DualStart* start) {
   const Index m = p.A.rows();
   const int solvesBefore = k.solves;
   GcpState st{p, k, VectorXd::Zero(m), p.gap + p.A * du0, VectorXd::Zero(du0.size())};
+  if (start != nullptr && start->lambda.size() == m && m > 0 && start->lambda.cwiseAbs().maxCoeff() > 0.0) {
+    st.lambda = start->lambda;
+    for (Index i = 0; i < m; ++i) {
+      if (!p.isBilateral(i)) {
+        st.lambda(i) = std::max(0.0, st.lambda(i));
+      }
+    }
+    st.w = start->w.size() == du0.size() && st.lambda == start->lambda ? start->w
+                                                                       : applyKinvAt(p.A, k, st.lambda);
+    st.gap += p.A * st.w;
+  }
   const double tol = o.tolerance;
-  const int maxIterations =
-      o.maxIterations > 0 ? o.maxIterations : 2 * static_cast<int>(std::max<Index>(m, 1));
-  const double initialPenetration = maxInterpenetration(st.gap);
+  const int maxIterations = gcpIterationCap(m, o.maxIterations);
+  double preconditionFrom = -1.0; // projected-gradient norm below which DIRICHLET applies
   DualResult r;
   VectorXd d;
   VectorXd z;
@@ -257,20 +347,23 @@ DualResult solveProjectedGradient(const ContactProblem& p, StiffnessInverse& k, 
   std::vector<char> maskPrev;
   for (r.iterations = 0; r.iterations <= maxIterations; ++r.iterations) {
     const VectorXd g = st.projected();
-    if (m == 0 || g.cwiseAbs().maxCoeff() <= tol) {
+    const double residual = m > 0 ? g.cwiseAbs().maxCoeff() : 0.0;
+    if (m == 0 || residual <= tol) {
       r.converged = true;
       break;
     }
     if (r.iterations == maxIterations) {
       break;
     }
+    if (r.iterations == 0) {
+      preconditionFrom = o.preconditionerResidual * residual;
+    }
     std::vector<char> mask(static_cast<std::size_t>(m));
     for (Index i = 0; i < m; ++i) {
       mask[static_cast<std::size_t>(i)] = st.free(i) ? 1 : 0;
     }
-    const bool precondition = o.dirichletPreconditioner &&
-                              (o.preconditionerResidual < 0.0 ||
-                               maxInterpenetration(st.gap) <= o.preconditionerResidual * initialPenetration);
+    const bool precondition =
+        o.dirichletPreconditioner && (preconditionFrom <= 0.0 || residual <= preconditionFrom);
     if (precondition) {
       const int count = static_cast<int>(std::count(mask.begin(), mask.end(), 1));
       z = dirichlet(st, g, mask, o.preconditionerIterations > 0 ? o.preconditionerIterations : count);
@@ -336,7 +429,9 @@ DualResult solveProjectedGradient(const ContactProblem& p, StiffnessInverse& k, 
     }
   }
   r.lambda = st.lambda;
-  r.du = du0 + st.w;
+  if (o.computeDisplacement) {
+    r.du = du0 + st.w;
+  }
   r.finalGap = st.gap;
   r.activeLinks = static_cast<int>((st.lambda.array() != 0.0).count());
   r.solves = k.solves - solvesBefore;

@@ -8,18 +8,27 @@
 //     du = du0 + K^-1 A^T lambda,   gap(du) >= 0,   lambda . gap(du) = 0,
 // i.e. the linear complementarity problem on the Schur complement S = A K^-1 A^T (code_aster
 // writes it -A C^-1 A^T with multipliers of the opposite sign):
-//   CONTRAINTE  active-set method: S restricted to the active links built explicitly, columns
-//               K^-1 A_i^T computed NB_RESOL right-hand sides per solve and kept; links added
-//               (most violated) or removed (most negative multiplier) one at a time; finite
-//               convergence; at most ITER_CONT_MULT x (number of links) iterations; a singular
-//               active Schur matrix is detected (STOP_SINGULIER).
+//   CONTRAINTE  active-set method on the explicit Schur complement: the columns S_i = A K^-1 A_i^T
+//               of the links that become active are computed NB_RESOL right-hand sides per K
+//               solve and kept (only their m link entries: the n-vectors K^-1 A_i^T are not
+//               stored, one more solve gives du at the end); the active matrix is factorised
+//               by Cholesky extended one link at a time (a link whose pivot vanishes makes it
+//               singular: STOP_SINGULIER) and refactorised only when links leave. Every
+//               violated link enters at once and every negative multiplier leaves at once
+//               (most violated first); after a few such rounds without convergence it falls
+//               back to one link at a time (the classical finite algorithm). At most
+//               ITER_CONT_MULT x (number of links) iterations.
 //   GCP         projected conjugate gradient on the dual: one K solve per iteration; converged
 //               when the projected gradient (interpenetration of free links, gap of active ones)
-//               is below RESI_ABSO; RECH_LINEAIRE ADMISSIBLE (steps stop at the bound lambda = 0)
-//               or NON_ADMISSIBLE (full step, then projection); PRE_COND='DIRICHLET': the
-//               direction is preconditioned by an approximate inverse of S on the active links
-//               (ITER_PRE_MAXI inner conjugate-gradient iterations, each one K solve), once the
-//               interpenetration has fallen below COEF_RESI x its initial value.
+//               is below RESI_ABSO; at most max(10 x links, ITER_GCP_MAXI) iterations (a user
+//               value only raises the default); RECH_LINEAIRE ADMISSIBLE (steps stop at the
+//               bound lambda = 0) or NON_ADMISSIBLE (full step, then projection);
+//               PRE_COND='DIRICHLET': the direction is preconditioned by an approximate inverse
+//               of S on the free links (ITER_PRE_MAXI inner conjugate-gradient iterations, 0:
+//               as many as free links, each one K solve), once the projected gradient has fallen
+//               below COEF_RESI x its value at the first iteration (COEF_RESI < 0: always).
+//   Both start from given multipliers when there are some (the previous Newton iteration's):
+//   CONTRAINTE takes their links as the initial active set, GCP starts from them.
 //   PENALISATION  (PenaltyContact.hpp) works on the tangent matrix instead.
 // GLISSIERE links are bilateral: always active, multiplier of any sign.
 
@@ -70,11 +79,20 @@ struct DualOptions {
   bool stopIfSingular = true;      // STOP_SINGULIER
   // GCP
   double tolerance = 0.0; // RESI_ABSO (GCP, mandatory there); CONTRAINTE: 0 = automatic
-  int maxIterations = 0;  // ITER_GCP_MAXI (0: 2 x links)
+  int maxIterations = 0;  // ITER_GCP_MAXI (the cap is max(10 x links, ITER_GCP_MAXI))
   bool admissibleLineSearch = true;
   bool dirichletPreconditioner = false;
   double preconditionerResidual = -1.0; // COEF_RESI (< 0: from the start)
-  int preconditionerIterations = 0;     // ITER_PRE_MAXI (0: active links)
+  int preconditionerIterations = 0;     // ITER_PRE_MAXI (0: free links)
+  // false: du and finalGap are not computed (saves the final K solve when the caller applies
+  // the multipliers itself).
+  bool computeDisplacement = true;
+};
+
+// Initial multipliers (per link) and, when known, w = K^-1 A^T lambda (empty: computed).
+struct DualStart {
+  Eigen::VectorXd lambda;
+  Eigen::VectorXd w;
 };
 
 struct DualResult {
@@ -109,8 +127,11 @@ public:
 };
 
 DualResult solveActiveSet(const ContactProblem& problem, StiffnessInverse& k, const Eigen::VectorXd& du0,
-                          const DualOptions& options);
+                          const DualOptions& options, const DualStart* start = nullptr);
 DualResult solveProjectedGradient(const ContactProblem& problem, StiffnessInverse& k,
-                                  const Eigen::VectorXd& du0, const DualOptions& options);
+                                  const Eigen::VectorXd& du0, const DualOptions& options,
+                                  const DualStart* start = nullptr);
+// The iteration cap of GCP for `links` links.
+int gcpIterationCap(Eigen::Index links, int iterGcpMaxi);
 
 } // namespace stella::contact

@@ -57,6 +57,7 @@ DualContactConstraint::DualContactConstraint(std::shared_ptr<const ContactDefini
   options_.rightHandSidesPerSolve = s.rightHandSidesPerSolve;
   options_.iterationFactor = s.contactIterationFactor;
   options_.stopIfSingular = s.stopIfSingular;
+  options_.computeDisplacement = false; // correct() applies the multipliers with one solve
   if (algorithm_ == ContactAlgorithm::Gcp) {
     options_.tolerance = s.gcpTolerance.value_or(0.0);
     options_.maxIterations = s.gcpMaxIterations;
@@ -106,11 +107,11 @@ void DualContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::VectorXd&
 }
 
 DualResult DualContactConstraint::solve(const ContactProblem& problem, StiffnessInverse& k,
-                                        const Eigen::VectorXd& du0) const {
+                                        const Eigen::VectorXd& du0, const DualStart& start) const {
   const Mesh& mesh = *definition_->mesh;
   try {
-    return algorithm_ == ContactAlgorithm::Gcp ? solveProjectedGradient(problem, k, du0, options_)
-                                               : solveActiveSet(problem, k, du0, options_);
+    return algorithm_ == ContactAlgorithm::Gcp ? solveProjectedGradient(problem, k, du0, options_, &start)
+                                               : solveActiveSet(problem, k, du0, options_, &start);
   } catch (const SingularContactError& e) {
     const auto& l = links_[static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(e.link())])];
     throw UserError(
@@ -146,29 +147,32 @@ void DualContactConstraint::correct(const Eigen::VectorXd& u, Eigen::VectorXd& d
   SaddleStiffness k(solver, dlambda.size(), ddu.size());
   const SparseRows& a = rows_.problem.A;
   // The free correction: the linear solve included the forces A^T mu of the current multipliers.
+  // They are the algorithms' starting point (GCP starts from them, CONTRAINTE from their links).
+  DualStart start;
   if (mu_.cwiseAbs().maxCoeff() > 0.0) {
-    Eigen::VectorXd x;
     Eigen::VectorXd y;
-    k.solveWithMultipliers(a.transpose() * mu_, x, y);
-    ddu -= x;
+    k.solveWithMultipliers(a.transpose() * mu_, start.w, y);
+    ddu -= start.w;
     if (y.size() == dlambda.size()) {
       dlambda -= y;
     }
+    start.lambda = mu_;
   }
   ContactProblem problem{a, gapsAt(u), rows_.problem.bilateral};
-  const DualResult r = solve(problem, k, ddu);
-  mu_ = r.lambda;
-  for (Eigen::Index i = 0; i < m; ++i) {
-    muLink_[static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(i)])] = mu_(i);
-  }
-  if (mu_.cwiseAbs().maxCoeff() > 0.0) {
+  const DualResult r = solve(problem, k, ddu, start);
+  // One solve applies the multipliers: ddu (free) + K^-1 A^T lambda.
+  if (r.lambda.cwiseAbs().maxCoeff() > 0.0) {
     Eigen::VectorXd x;
     Eigen::VectorXd y;
-    k.solveWithMultipliers(a.transpose() * mu_, x, y);
+    k.solveWithMultipliers(a.transpose() * r.lambda, x, y);
     ddu += x;
     if (y.size() == dlambda.size()) {
       dlambda += y;
     }
+  }
+  mu_ = r.lambda;
+  for (Eigen::Index i = 0; i < m; ++i) {
+    muLink_[static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(i)])] = mu_(i);
   }
   solves_ += k.solves;
   addContactIterations(r.iterations);

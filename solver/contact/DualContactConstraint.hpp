@@ -34,7 +34,8 @@ protected:
   void accepted(const std::vector<LinkState>& rowStates) override;
 
 private:
-  DualResult solve(const ContactProblem& problem, StiffnessInverse& k, const Eigen::VectorXd& du0) const;
+  DualResult solve(const ContactProblem& problem, StiffnessInverse& k, const Eigen::VectorXd& du0,
+                   const DualStart& start) const;
 
   ContactAlgorithm algorithm_;
   DualOptions options_;

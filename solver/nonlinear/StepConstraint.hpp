@@ -14,7 +14,13 @@
 //   on mechanical convergence: acceptConvergence(u) -> false re-pairs (geometric loop) and the
 //   Newton iterations go on; true ends the step.
 //   store(step) after acceptance (and once for the initial state, before the first step).
+//
+// Alarms the constraint raises while solving (interpenetration in a zone only measured,
+// geometric loop not converged to 1 %, penalty coefficient at its maximum...) go to the
+// diagnostic sink STAT_NON_LINE gives it (the session's: framed in the message file and counted
+// in the job diagnostic, <A>_ALARM); without a sink (unit tests) they stay in the step report.
 
+#include "interpreter/Diagnostics.hpp"
 #include "solver/nonlinear/SaddleSolver.hpp"
 
 #include <Eigen/Dense>
@@ -74,6 +80,23 @@ public:
   // A note added to the singular-stiffness error (a body held only by contact: discrete
   // formulations need springs, notice §4.4.2); empty when it has nothing to say.
   virtual std::string singularNote() const = 0;
+
+  // Where the constraint's alarms go (null: none, they stay in the step report).
+  void setDiagnosticSink(DiagnosticSink* sink) { sink_ = sink; }
+
+protected:
+  // Emits an alarm through the sink; false when there is none (the caller then reports it
+  // itself).
+  bool emitAlarm(const Diagnostic& alarm) const {
+    if (sink_ == nullptr) {
+      return false;
+    }
+    sink_->report(alarm);
+    return true;
+  }
+
+private:
+  DiagnosticSink* sink_ = nullptr;
 };
 
 } // namespace stella

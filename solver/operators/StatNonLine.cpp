@@ -124,6 +124,9 @@ Value runStatNonLine(OperatorCall& call) {
   auto& msg = call.session.message();
   NewtonDriver driver(system, settings, msg);
   const std::unique_ptr<StepConstraint> constraint = makeContactConstraint(kw, system);
+  if (constraint != nullptr) {
+    constraint->setDiagnosticSink(&call.session); // its alarms count in the job diagnostic
+  }
   driver.setConstraint(constraint.get());
   msg << effectsLine(system, settings, constraint.get(), cuts);
 
@@ -140,6 +143,7 @@ Value runStatNonLine(OperatorCall& call) {
     store(*result, state, system, constraint.get());
   }
   rememberLoads(result, system.excitations());
+  rememberCharacteristics(result, readCaraElem(kw));
   Value made = call.makeConcept(result);
 
   ProgressLine progress(times.front(), times.back());

@@ -9,8 +9,11 @@ Cases:
            one layer of C3D8 of thickness 1 with DZ = 0 everywhere.
   block3d  two stacked cubes, 23^3 and 24^3 HEXA8, non-matching interface (~88 000 equations):
            uniform compression, closed form sigma_zz = -E delta / 20.
-  overhead block3d with matching meshes (24^3 and 24^3): the contact solve against the linear solve
-           of the same mesh with the interface bonded (merged nodes); stella only.
+  overhead block3d with matching meshes (24^3 and 24^3): the contact solve (CONTRAINTE and GCP)
+           against the linear solve of the same mesh with the interface bonded (merged nodes);
+           stella only.
+stella runs each contact case with ALGO_CONT='CONTRAINTE' (default) and 'GCP' (RESI_ABSO 1e-8 mm
+for hertz2d, 1e-9 mm for block3d: 1e-8 and 1e-7 of the imposed displacements).
 Usage: bench.py [--stella build/bin/stella] [--cases hertz2d,block3d,overhead] [--codes ccx,stella]
                 [--work /tmp/stella-ccx-bench]
 Both codes run on one core (OMP_NUM_THREADS=1); times are wall-clock of the whole run (reading
@@ -187,7 +190,7 @@ CL = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=(_F(GROUP_MA='BLOC_BASE', DY=0.0), _F(GR
                                           _F(GROUP_MA='IND_TOP', DY={MD})))
 RAMPE = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0))
 L_INST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, NOMBRE=1))
-CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='DISCRETE', ZONE=_F(GROUP_MA_MAIT='BLOC_TOP', GROUP_MA_ESCL='IND_CONT'))
+CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='DISCRETE',{GLOBAL} ZONE=_F(GROUP_MA_MAIT='BLOC_TOP', GROUP_MA_ESCL='IND_CONT'{ALGO}))
 RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, CONTACT=CONT, EXCIT=_F(CHARGE=CL, FONC_MULT=RAMPE),
                      INCREMENT=_F(LIST_INST=L_INST))
 IMPR_RESU(FORMAT='RESULTAT', RESU=_F(RESULTAT=RESU, NOM_CHAM='CONT_NOEU', INST=1.0, GROUP_NO='IND_CONT'))
@@ -263,11 +266,12 @@ def nodal_pressure(points, rows, slave, tributary):
     return rn / tributary
 
 
-def stella_hertz(work, stella):
+def stella_hertz(work, stella, algo=""):
     msh = hertz_mesh(work)
     mesh = Mesh(msh)
-    d = work / "stella_hertz2d"
-    rc, wall, cpu = stella_run(stella, d, HERTZ_COMM.format(E=E, NU=NU, MD=-D_HERTZ), msh)
+    d = work / f"stella_hertz2d{'_gcp' if algo else ''}"
+    comm = HERTZ_COMM.format(E=E, NU=NU, MD=-D_HERTZ, ALGO=algo, GLOBAL=(" RESI_ABSO=1.0e-8," if algo else ""))
+    rc, wall, cpu = stella_run(stella, d, comm, msh)
     rows = read_resu_block(d / "case.resu", "CONT_NOEU")
     slave = mesh.group_nodes("IND_CONT")
     x = mesh.points[slave][:, 0]
@@ -356,6 +360,7 @@ def main():
             results["ccx hertz2d"] = ccx_hertz(work)
         if "stella" in codes:
             results["stella hertz2d"] = stella_hertz(work, stella)
+            results["stella hertz2d GCP"] = stella_hertz(work, stella, algo=", ALGO_CONT='GCP'")
     if "block3d" in cases:
         if "ccx" in codes:
             results["ccx block3d"] = ccx_block(work)
@@ -364,6 +369,7 @@ def main():
             results["stella block3d GCP"] = stella_block(work, stella, algo=", ALGO_CONT='GCP'")
     if "overhead" in cases:
         results["stella block 24/24 contact"] = stella_block(work, stella, 24, 24)
+        results["stella block 24/24 contact GCP"] = stella_block(work, stella, 24, 24, algo=", ALGO_CONT='GCP'")
         results["stella block 24/24 bonded, MECA_STATIQUE"] = stella_block(work, stella, 24, 24, merged="linear")
         results["stella block 24/24 bonded, STAT_NON_LINE"] = stella_block(work, stella, 24, 24, merged="snl")
     for name, r in results.items():
