@@ -2,21 +2,23 @@
 
 #include "solver/nonlinear/ElasticSolve.hpp"
 
+#include <optional>
+
 namespace stella {
 
 StaticSolution ElasticSolve::solve(double time, bool withStress) {
   const int n = system_.dofs().physicalCount();
-  const PointState zero = zeroPointState(system_.model(), system_.behaviours().maxInternalVariables());
   const Eigen::VectorXd none = Eigen::VectorXd::Zero(n);
+  std::optional<PointState> zero;
   if (!factorized_) {
-    StiffnessMatrix* k = nullptr;
+    StiffnessMatrix& k = system_.stiffness(true); // the pattern, at the first call: numbering
     {
       PhaseClock clock(system_.phases().assembly);
-      k = &system_.stiffness(true);
-      system_.assembler().run(none, none, zero, behaviour::Option::ElasticTangent,
-                              {nullptr, nullptr, nullptr, k});
+      zero = zeroPointState(system_.model(), system_.behaviours().maxInternalVariables());
+      system_.assembler().run(none, none, *zero, behaviour::Option::ElasticTangent,
+                              {nullptr, nullptr, nullptr, &k});
     }
-    system_.solver().factorize(*k);
+    system_.solver().factorize(k);
     factorized_ = true;
   }
   Eigen::VectorXd f;
@@ -30,10 +32,13 @@ StaticSolution ElasticSolve::solve(double time, bool withStress) {
   }
   StaticSolution s;
   system_.solver().solve(f, g, p, s.displacement, s.multipliers);
-  s.state = zero;
+  PhaseClock clock(system_.phases().post);
+  if (!zero) {
+    zero = zeroPointState(system_.model(), system_.behaviours().maxInternalVariables());
+  }
+  s.state = *zero;
   if (withStress) {
-    PhaseClock clock(system_.phases().post);
-    system_.assembler().run(none, s.displacement, zero, behaviour::Option::Full,
+    system_.assembler().run(none, s.displacement, *zero, behaviour::Option::Full,
                             {nullptr, nullptr, &s.state});
   }
   return s;
