@@ -1,4 +1,4 @@
-// ResultLoads: a registry from live results to their excitations.
+// ResultLoads: registries from live results to their excitations and element characteristics.
 
 #include "solver/nonlinear/ResultLoads.hpp"
 
@@ -18,6 +18,16 @@ std::map<const Result*, Entry>& registry() {
   return r;
 }
 
+struct CaraEntry {
+  std::weak_ptr<Result> result;
+  std::shared_ptr<const ElementCharacteristics> cara;
+};
+
+std::map<const Result*, CaraEntry>& caraRegistry() {
+  static std::map<const Result*, CaraEntry> r;
+  return r;
+}
+
 } // namespace
 
 void rememberLoads(const std::shared_ptr<Result>& result, std::vector<Excitation> excitations) {
@@ -30,6 +40,19 @@ const std::vector<Excitation>* rememberedLoads(const Result& result) {
     return nullptr;
   }
   return &it->second.excitations;
+}
+
+void rememberCharacteristics(const std::shared_ptr<Result>& result,
+                             std::shared_ptr<const ElementCharacteristics> cara) {
+  caraRegistry()[result.get()] = CaraEntry{result, std::move(cara)};
+}
+
+std::shared_ptr<const ElementCharacteristics> rememberedCharacteristics(const Result& result) {
+  auto it = caraRegistry().find(&result);
+  if (it == caraRegistry().end() || it->second.result.expired()) {
+    return nullptr;
+  }
+  return it->second.cara;
 }
 
 } // namespace stella

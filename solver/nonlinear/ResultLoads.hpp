@@ -1,9 +1,12 @@
 #pragma once
-// The loads (EXCIT) each result was computed with, remembered by MECA_STATIQUE and STAT_NON_LINE
-// so that CALC_CHAMP can form REAC_NODA = FORC_NODA - external forces without EXCIT, as
-// code_aster does. Kept beside the shared Result contract (which has no place for them).
+// The loads (EXCIT) and element characteristics (CARA_ELEM) each result was computed with,
+// remembered by MECA_STATIQUE and STAT_NON_LINE so that CALC_CHAMP can form FORC_NODA (with the
+// forces of discrete springs) and REAC_NODA = FORC_NODA - external forces without EXCIT or
+// CARA_ELEM, as code_aster does. Kept beside the shared Result contract (which has no place for
+// them).
 
 #include "solver/database/Result.hpp"
+#include "solver/model/ElementCharacteristics.hpp"
 #include "solver/nonlinear/Excitation.hpp"
 
 #include <memory>
@@ -14,5 +17,10 @@ namespace stella {
 void rememberLoads(const std::shared_ptr<Result>& result, std::vector<Excitation> excitations);
 // Null when the result was not made by a static driver of this run.
 const std::vector<Excitation>* rememberedLoads(const Result& result);
+
+// The CARA_ELEM of a result (null: none given, or not made by a static driver of this run).
+void rememberCharacteristics(const std::shared_ptr<Result>& result,
+                             std::shared_ptr<const ElementCharacteristics> cara);
+std::shared_ptr<const ElementCharacteristics> rememberedCharacteristics(const Result& result);
 
 } // namespace stella

@@ -6,8 +6,10 @@
 //   DEFORMATION  EPSI_ELGA (from DEPL), EPSI_ELNO, EPSI_NOEU
 //   CRITERES     SIEQ_ELGA (from SIEF_ELGA), SIEQ_ELNO (from SIGM_ELNO), SIEQ_NOEU (SIEQ_ELNO averaged)
 //   VARI_INTERNE VARI_ELNO, VARI_NOEU (from VARI_ELGA)
-//   FORCE        FORC_NODA (B^T sigma of SIEF_ELGA), REAC_NODA (FORC_NODA minus the external
-//                forces of the loads the result was computed with)
+//   FORCE        FORC_NODA (B^T sigma of SIEF_ELGA, plus k u of the DIS_T / 2D_DIS_T springs of
+//                the CARA_ELEM the result was computed with, or of CALC_CHAMP's CARA_ELEM),
+//                REAC_NODA (FORC_NODA minus the external forces of the loads the result was
+//                computed with)
 // Only the asked fields are stored; intermediate ones (SIGM_ELNO for SIEQ_NOEU...) are computed
 // in memory when needed and said so in the message file. Other options are refused by name as
 // not implemented yet. The methods are described in solver/post/DerivedFields.hpp.
@@ -15,7 +17,9 @@
 #include "interpreter/Diagnostics.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/functions/RealFunction.hpp"
+#include "solver/model/ElementCharacteristics.hpp"
 #include "solver/model/MaterialField.hpp"
+#include "solver/model/Model.hpp"
 #include "solver/model/Selection.hpp"
 #include "solver/nonlinear/ExternalForces.hpp"
 #include "solver/nonlinear/NodalForces.hpp"
@@ -240,8 +244,35 @@ struct ForceContext {
   const DofMap dofs;
   const std::vector<Excitation>* loads;
   const MaterialField* materials;
+  const ElementCharacteristics* cara; // springs, or null
   std::vector<Eigen::VectorXd> cache;
 };
+
+// Adds the internal forces of the discrete springs, k_c u_c at the spring's node, to `forces`.
+void addSpringForces(const ForceContext& ctx, const ResultStep& step, const std::string& name,
+                     const KeywordTree& kw, Eigen::VectorXd& forces) {
+  if (ctx.cara == nullptr || ctx.cara->springs.empty()) {
+    return;
+  }
+  const Field* depl = step.field("DEPL");
+  if (depl == nullptr || depl->support() != FieldSupport::Node) {
+    throw UserError(Diagnostic::fatal(
+        "CALC_4",
+        fmt::format("result {} has no DEPL at NUME_ORDRE {}: the spring forces of FORC_NODA need it", name,
+                    step.number),
+        kw.locationOf("FORCE")));
+  }
+  for (const DiscreteSpring& spring : ctx.cara->springs) {
+    for (int c = 0; c < ctx.dofs.components(); ++c) {
+      const int eq = ctx.dofs.dof(spring.node, c);
+      const auto cmp = depl->componentIndex(Model::componentName(c));
+      if (eq >= 0 && cmp) {
+        forces(eq) += spring.stiffness[static_cast<std::size_t>(c)] *
+                      depl->value(static_cast<std::size_t>(spring.node), *cmp);
+      }
+    }
+  }
+}
 
 void computeForces(ForceContext& ctx, ResultStep& step, const std::vector<std::string>& options,
                    const std::string& name, const KeywordTree& kw) {
@@ -253,7 +284,8 @@ void computeForces(ForceContext& ctx, ResultStep& step, const std::vector<std::s
                     step.number),
         kw.locationOf("FORCE")));
   }
-  const Eigen::VectorXd forc = forcesFromStress(ctx.model, ctx.dofs, *sief);
+  Eigen::VectorXd forc = forcesFromStress(ctx.model, ctx.dofs, *sief);
+  addSpringForces(ctx, step, name, kw, forc);
   for (const auto& option : options) {
     if (option == "FORC_NODA") {
       step.fields["FORC_NODA"] = nodalField(ctx.model, ctx.dofs, forc, "DEPL_R");
@@ -267,6 +299,21 @@ void computeForces(ForceContext& ctx, ResultStep& step, const std::vector<std::s
       step.fields["REAC_NODA"] = nodalField(ctx.model, ctx.dofs, forc - fext, "DEPL_R");
     }
   }
+}
+
+// CALC_CHAMP's CARA_ELEM, else the one the result was computed with (null: none).
+std::shared_ptr<const ElementCharacteristics> characteristics(const KeywordTree& kw, const Result& source,
+                                                              const Model& model) {
+  if (!kw.has("CARA_ELEM")) {
+    return rememberedCharacteristics(source);
+  }
+  auto cara = conceptData<ElementCharacteristics>(kw.conceptValue("CARA_ELEM"));
+  STELLA_ASSERT(cara != nullptr, "CARA_ELEM holds no element characteristics");
+  if (cara->model.get() != &model) {
+    throw UserError(Diagnostic::fatal("CARA_6", "CARA_ELEM was defined on another model than the result's",
+                                      kw.locationOf("CARA_ELEM")));
+  }
+  return cara;
 }
 
 Value runCalcChamp(OperatorCall& call) {
@@ -304,8 +351,10 @@ Value runCalcChamp(OperatorCall& call) {
   }
   std::unique_ptr<ForceContext> forces;
   const auto* loads = rememberedLoads(*source);
+  auto cara = characteristics(kw, *source, *model);
   if (!forceOptions.empty()) {
-    forces = std::make_unique<ForceContext>(ForceContext{*model, DofMap(*model), loads, materials.get(), {}});
+    forces = std::make_unique<ForceContext>(
+        ForceContext{*model, DofMap(*model), loads, materials.get(), cara.get(), {}});
   }
   std::set<std::string> intermediates;
   for (ResultStep* step : steps) {
@@ -324,6 +373,9 @@ Value runCalcChamp(OperatorCall& call) {
   }
   if (loads != nullptr && !call.reused) {
     rememberLoads(result, *loads);
+  }
+  if (!call.reused) {
+    rememberCharacteristics(result, rememberedCharacteristics(*source));
   }
   call.session.message() << fmt::format("  CALC_CHAMP: {} stored on {} step(s) of {}",
                                         fmt::join(options, ", "), steps.size(), concept_->name);

@@ -97,6 +97,7 @@ Value runMecaStatique(OperatorCall& call) {
   phases.solve = solverTimes.solve;
   msg << formatPhases(phases, solverTimes.analyses);
   rememberLoads(result, excitations);
+  rememberCharacteristics(result, cara);
   return call.makeConcept(result);
 }
 

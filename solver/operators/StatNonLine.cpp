@@ -143,6 +143,7 @@ Value runStatNonLine(OperatorCall& call) {
     store(*result, state, system, constraint.get());
   }
   rememberLoads(result, system.excitations());
+  rememberCharacteristics(result, readCaraElem(kw));
   Value made = call.makeConcept(result);
 
   ProgressLine progress(times.front(), times.back());
