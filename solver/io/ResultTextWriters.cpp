@@ -338,16 +338,26 @@ std::string formatResultTables(const Mesh& mesh, const Result& result, const Res
         }
         s += line + "\n";
       };
+      const auto printed = [](const std::vector<bool>& selection, std::size_t e) {
+        return selection.empty() || (e < selection.size() && selection[e]);
+      };
       if (f->support() == FieldSupport::Node) {
         for (std::size_t e = 0; e < f->entityCount() && e < static_cast<std::size_t>(mesh.nodeCount()); ++e) {
-          row(fmt::format(" {:<8}", mesh.nodeName(static_cast<NodeId>(e))), e);
+          if (printed(output.nodes, e)) {
+            row(fmt::format(" {:<8}", mesh.nodeName(static_cast<NodeId>(e))), e);
+          }
         }
       } else if (f->support() == FieldSupport::Cell) {
         for (std::size_t e = 0; e < f->entityCount() && e < static_cast<std::size_t>(mesh.cellCount()); ++e) {
-          row(fmt::format(" {:<8}", mesh.cellName(static_cast<CellId>(e))), e);
+          if (printed(output.cells, e)) {
+            row(fmt::format(" {:<8}", mesh.cellName(static_cast<CellId>(e))), e);
+          }
         }
       } else {
         for (std::size_t c = 0; c < f->cellCount() && c < static_cast<std::size_t>(mesh.cellCount()); ++c) {
+          if (!printed(output.cells, c)) {
+            continue;
+          }
           for (int p = 0; p < f->pointCount(c); ++p) {
             row(fmt::format(" {:<8} {:>5}", mesh.cellName(static_cast<CellId>(c)), p + 1),
                 f->firstPoint(c) + static_cast<std::size_t>(p));

@@ -30,6 +30,10 @@ struct ResultOutput {
   std::vector<int> steps;              // NUME_ORDRE; empty = every step
   std::vector<std::string> components; // NOM_CMP filter; empty = every component
   GaussPointProvider gaussPoints;
+  // GROUP_NO / GROUP_MA of FORMAT='RESULTAT': the nodes (nodal fields) and cells (per-cell and
+  // per-point fields) whose rows are printed; empty = every one. The other formats write all.
+  std::vector<bool> nodes;
+  std::vector<bool> cells;
 };
 
 // The code_aster MED field name: RESU____DEPL.

@@ -2,7 +2,8 @@
 // to the file), 'RESULTAT' (text tables, unit 8 = the result file), 'GMSH' (unit 37) and 'VTU'
 // (stella's extension: the unit's file is a .pvd collection with one .vtu per step beside it).
 // RESU occurrences: MAILLAGE alone, or RESULTAT with NOM_CHAM, NUME_ORDRE / INST / TOUT_ORDRE
-// and NOM_CMP selections. Gauss points get the coordinates of the code_aster RIGI family.
+// and NOM_CMP selections; GROUP_NO / GROUP_MA restrict the rows of FORMAT='RESULTAT'. Gauss points get the
+// coordinates of the code_aster RIGI family.
 
 #include "solver/database/Result.hpp"
 #include "solver/fem/Quadrature.hpp"
@@ -66,6 +67,59 @@ struct Target {
   std::string format;
 };
 
+// GROUP_NO / GROUP_MA (FORMAT='RESULTAT'): nodal fields are printed on the nodes of GROUP_NO and
+// of the cells of GROUP_MA; cell and point fields on the cells of GROUP_MA, or, with GROUP_NO
+// alone, on the cells that hold one of its nodes. The other formats write every node and cell
+// (alarm IMPR_RESU_4).
+void restrictToGroups(OperatorCall& call, const Target& target, const KeywordTree& occ, const Mesh& mesh,
+                      ResultOutput& out) {
+  if (!occ.has("GROUP_NO") && !occ.has("GROUP_MA")) {
+    return;
+  }
+  if (target.format != "RESULTAT") {
+    call.session.report(Diagnostic::alarm("IMPR_RESU_4",
+                                          "GROUP_NO / GROUP_MA do not restrict FORMAT='" + target.format +
+                                              "' yet: every node and cell is written",
+                                          occ.locationOf(occ.has("GROUP_NO") ? "GROUP_NO" : "GROUP_MA")));
+    return;
+  }
+  out.nodes.assign(static_cast<std::size_t>(mesh.nodeCount()), false);
+  out.cells.assign(static_cast<std::size_t>(mesh.cellCount()), false);
+  for (const auto& g : occ.texts("GROUP_MA")) {
+    const auto* cells = mesh.cellGroup(g);
+    if (cells == nullptr) {
+      throw UserError(Diagnostic::fatal("GROUP_1", "the mesh has no cell group (GROUP_MA) '" + g + "'",
+                                        occ.locationOf("GROUP_MA")));
+    }
+    for (const CellId c : *cells) {
+      out.cells[static_cast<std::size_t>(c)] = true;
+      for (const NodeId n : mesh.cellNodes(c)) {
+        out.nodes[static_cast<std::size_t>(n)] = true;
+      }
+    }
+  }
+  for (const auto& g : occ.texts("GROUP_NO")) {
+    const auto* nodes = mesh.nodeGroup(g);
+    if (nodes == nullptr) {
+      throw UserError(Diagnostic::fatal("GROUP_2", "the mesh has no node group (GROUP_NO) '" + g + "'",
+                                        occ.locationOf("GROUP_NO")));
+    }
+    for (const NodeId n : *nodes) {
+      out.nodes[static_cast<std::size_t>(n)] = true;
+    }
+  }
+  if (!occ.has("GROUP_MA")) {
+    for (CellId c = 0; c < mesh.cellCount(); ++c) {
+      for (const NodeId n : mesh.cellNodes(c)) {
+        if (out.nodes[static_cast<std::size_t>(n)]) {
+          out.cells[static_cast<std::size_t>(c)] = true;
+          break;
+        }
+      }
+    }
+  }
+}
+
 void writeOccurrence(OperatorCall& call, const Target& target, const KeywordTree& occ, bool& fileStarted) {
   std::shared_ptr<const Mesh> mesh;
   std::shared_ptr<Result> result;
@@ -104,6 +158,7 @@ void writeOccurrence(OperatorCall& call, const Target& target, const KeywordTree
     }
   }
   out.gaussPoints = rigiPoints;
+  restrictToGroups(call, target, occ, *mesh, out);
   const Result* r = result.get();
   if (target.format == "MED") {
     writeMedResult(target.path, *mesh, mesh->name(), r, out, fileStarted);
