@@ -21,8 +21,11 @@ namespace stella {
 class Catalog;
 
 struct SessionOptions {
-  bool executeOperators = true; // false for `stella check`: validate only
-  bool referenceOnly = false;   // --reference-only: VALE_CALC lines are information
+  // false for `stella check`: validate only, except the operators that only compute values of the
+  // language (FIN, FORMULE, DEFI_FONCTION, DEFI_LIST_REEL: see runsWhenChecking in Session.cpp), so
+  // that a formula's syntax is checked and F(x) or a list can be used later in the file.
+  bool executeOperators = true;
+  bool referenceOnly = false; // --reference-only: VALE_CALC lines are information
   std::filesystem::path workDirectory = ".";
 };
 

@@ -204,5 +204,21 @@ printf 'F comm refused.comm D 1\nF mail bar.mail D 20\nF mess results/refused.me
 "$stella" run refused.export --quiet >out.txt 2>err.txt; code=$?
 check "CALC_CHAMP option not implemented: refused by name" grep -q "CALC_CHAMP CONTRAINTE='EFGE_ELNO' is not implemented yet" results/refused.mess
 
+# `stella check` runs the language-level operators (FIN, FORMULE, DEFI_FONCTION, DEFI_LIST_REEL).
+"$stella" check ok.comm >out.txt 2>err.txt; code=$?
+check "check: DEBUT()/FIN() valid, exit 0" test $code -eq 0
+check "check: FIN() seen (no missing-FIN alarm)" test "$(grep -c LANG_FIN err.txt)" -eq 0
+printf "DEBUT()\nF = FORMULE(VALE='X * (1 + Y', NOM_PARA=('X', 'Y'))\nFIN()\n" > badformula.comm
+"$stella" check badformula.comm >out.txt 2>err.txt; code=$?
+check "check: broken FORMULE is an error, exit 2" test $code -eq 2
+check "check: FORMULE error points inside the string" grep -q "badformula.comm:2:" err.txt
+printf "DEBUT()\nF = FORMULE(VALE='X*2', NOM_PARA='X')\nif F(3.0) != 6.0:\n    print(wrong_value)\nFIN()\n" > callformula.comm
+"$stella" check callformula.comm >out.txt 2>err.txt; code=$?
+check "check: a FORMULE can be called later in the file" test $code -eq 0
+
+printf "DEBUT()\nF = FORMULE(VALE='X*2+Y', NOM_PARA=('X', 'Y'))\nprint('F=', F(3.0, Y=1))\nFIN()\n" > formulacall.comm
+"$stella" run formulacall.comm --quiet >out.txt 2>err.txt; code=$?
+check "run: F(3.0, Y=1) of a FORMULE by position and by name" grep -q "^F= 7.0" formulacall.mess
+
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]
