@@ -192,7 +192,7 @@ RAMPE = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0))
 L_INST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, NOMBRE=1))
 CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='DISCRETE',{GLOBAL} ZONE=_F(GROUP_MA_MAIT='BLOC_TOP', GROUP_MA_ESCL='IND_CONT'{ALGO}))
 RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, CONTACT=CONT, EXCIT=_F(CHARGE=CL, FONC_MULT=RAMPE),
-                     INCREMENT=_F(LIST_INST=L_INST))
+                     INCREMENT=_F(LIST_INST=L_INST){NEWTON})
 IMPR_RESU(FORMAT='RESULTAT', RESU=_F(RESULTAT=RESU, NOM_CHAM='CONT_NOEU', INST=1.0, GROUP_NO='IND_CONT'))
 FIN()
 """
@@ -212,7 +212,7 @@ BLOCK_CONTACT = """RAMPE = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1
 L_INST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, NOMBRE=1))
 CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='DISCRETE',{GLOBAL} ZONE=_F(GROUP_MA_MAIT='BAS_HAUT', GROUP_MA_ESCL='HAUT_BAS'{ALGO}))
 RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, CONTACT=CONT, EXCIT=_F(CHARGE=CL, FONC_MULT=RAMPE),
-                     INCREMENT=_F(LIST_INST=L_INST))"""
+                     INCREMENT=_F(LIST_INST=L_INST){NEWTON})"""
 BLOCK_LINEAR = "RESU = MECA_STATIQUE(MODELE=MO, CHAM_MATER=CM, EXCIT=_F(CHARGE=CL))"
 BLOCK_SNL = """RAMPE = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0))
 L_INST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, NOMBRE=1))
@@ -266,11 +266,18 @@ def nodal_pressure(points, rows, slave, tributary):
     return rn / tributary
 
 
-def stella_hertz(work, stella, algo=""):
+# The elastic matrix factorised once per step (NEWTON MATRICE='ELASTIQUE'): the same solution for
+# these linear elastic bodies (dual contact adds nothing to the matrix), one factorisation
+# instead of one per Newton iteration.
+ELASTIC_MATRIX = ", NEWTON=_F(MATRICE='ELASTIQUE')"
+
+
+def stella_hertz(work, stella, algo="", newton=""):
     msh = hertz_mesh(work)
     mesh = Mesh(msh)
-    d = work / f"stella_hertz2d{'_gcp' if algo else ''}"
-    comm = HERTZ_COMM.format(E=E, NU=NU, MD=-D_HERTZ, ALGO=algo, GLOBAL=(" RESI_ABSO=1.0e-8," if algo else ""))
+    d = work / f"stella_hertz2d{'_gcp' if algo else ''}{'_elas' if newton else ''}"
+    comm = HERTZ_COMM.format(E=E, NU=NU, MD=-D_HERTZ, ALGO=algo, GLOBAL=(" RESI_ABSO=1.0e-8," if algo else ""),
+                             NEWTON=newton)
     rc, wall, cpu = stella_run(stella, d, comm, msh)
     rows = read_resu_block(d / "case.resu", "CONT_NOEU")
     slave = mesh.group_nodes("IND_CONT")
@@ -290,14 +297,14 @@ def stella_hertz(work, stella, algo=""):
                 solve_wall=solve_wall, **hertz_errors(force, x, p))
 
 
-def stella_block(work, stella, nb=23, nh=24, merged=None, algo=""):
+def stella_block(work, stella, nb=23, nh=24, merged=None, algo="", newton=""):
     """merged: None (contact), 'linear' (bonded, MECA_STATIQUE) or 'snl' (bonded, STAT_NON_LINE)."""
     msh = block_mesh(work, nb, nh, merged is not None)
     mesh = Mesh(msh)
     solve = {"linear": BLOCK_LINEAR, "snl": BLOCK_SNL}.get(merged) or BLOCK_CONTACT.format(
-        ALGO=algo, GLOBAL=(" RESI_ABSO=1.0e-9," if algo else ""))
+        ALGO=algo, GLOBAL=(" RESI_ABSO=1.0e-9," if algo else ""), NEWTON=newton)
     fields = "'DEPL'" if merged else "('DEPL', 'CONT_NOEU')"
-    tag = f"stella_block_{nb}_{nh}{'_' + merged if merged else ''}{'_gcp' if algo else ''}"
+    tag = f"stella_block_{nb}_{nh}{'_' + merged if merged else ''}{'_gcp' if algo else ''}{'_elas' if newton else ''}"
     d = work / tag
     rc, wall, cpu = stella_run(stella, d, BLOCK_COMM.format(E=E, NU=NU, MD=-D_BLOCK, SOLVE=solve, FIELDS=fields), msh)
     slave = mesh.group_nodes("HAUT_BAS")
@@ -361,12 +368,16 @@ def main():
         if "stella" in codes:
             results["stella hertz2d"] = stella_hertz(work, stella)
             results["stella hertz2d GCP"] = stella_hertz(work, stella, algo=", ALGO_CONT='GCP'")
+            results["stella hertz2d GCP, MATRICE='ELASTIQUE'"] = stella_hertz(work, stella, algo=", ALGO_CONT='GCP'",
+                                                                             newton=ELASTIC_MATRIX)
     if "block3d" in cases:
         if "ccx" in codes:
             results["ccx block3d"] = ccx_block(work)
         if "stella" in codes:
             results["stella block3d"] = stella_block(work, stella)
             results["stella block3d GCP"] = stella_block(work, stella, algo=", ALGO_CONT='GCP'")
+            results["stella block3d GCP, MATRICE='ELASTIQUE'"] = stella_block(work, stella, algo=", ALGO_CONT='GCP'",
+                                                                             newton=ELASTIC_MATRIX)
     if "overhead" in cases:
         results["stella block 24/24 contact"] = stella_block(work, stella, 24, 24)
         results["stella block 24/24 contact GCP"] = stella_block(work, stella, 24, 24, algo=", ALGO_CONT='GCP'")
