@@ -347,7 +347,19 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
     }
     matrixNote = "";
     if (updateMatrix) {
-      factorizeMatrix(*k, start.displacement + du);
+      try {
+        factorizeMatrix(*k, start.displacement + du);
+      } catch (const UserError& e) {
+        if (e.first().id != "SOLVE_1") {
+          throw;
+        }
+        log_ << fmt::format("   | {:4d} | the tangent matrix is singular: the step fails\n", iter);
+        log_ << "   " << rule << "\n";
+        out.singularTangent = e.first();
+        factorized_ = false; // the backend holds no usable factorisation now
+        elasticFactorized_ = false;
+        return out;
+      }
       matrixNote = "TANGENTE";
     }
     const Eigen::VectorXd c = g - system_.solver().times(start.displacement + du);

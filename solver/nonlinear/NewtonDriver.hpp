@@ -15,6 +15,7 @@
 #include "solver/nonlinear/StepConstraint.hpp"
 
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -56,6 +57,11 @@ struct MechanicalState {
 struct StepOutcome {
   bool converged = false;
   bool integrationFailed = false; // a behaviour failed at a Gauss point
+  // The tangent matrix of a correction iteration was singular (SOLVE_1, naming the DOF): the
+  // state reached by the iterations, not the model, is at fault, so the step may be cut
+  // (code_aster's EVENEMENT='ERREUR' includes a singular matrix). A singular matrix in the
+  // prediction (the converged state's) is an error at once: a shorter step cannot change it.
+  std::optional<Diagnostic> singularTangent;
   int iterations = 0;
   int lineSearchIterations = 0; // over the whole step
   double resiRela = 0.0;

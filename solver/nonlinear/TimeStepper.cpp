@@ -18,6 +18,9 @@ std::string failureCause(const StepOutcome& o) {
   if (o.integrationFailed) {
     return "the behaviour integration failed";
   }
+  if (o.singularTangent) {
+    return fmt::format("the tangent matrix became singular at iteration {}", o.iterations);
+  }
   return fmt::format("Newton did not converge in {} iterations, RESI_GLOB_RELA = {:.3e}", o.iterations,
                      o.resiRela);
 }

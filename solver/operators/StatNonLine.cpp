@@ -186,6 +186,23 @@ Value runStatNonLine(OperatorCall& call) {
                     run.computedSteps, static_cast<int>(result->steps.size()), state.time);
     call.session.noteKeptResult(kept);
     const SteppingFailure& f = run.failure;
+    if (f.outcome.singularTangent) {
+      const Diagnostic& singular = *f.outcome.singularTangent;
+      Diagnostic d = Diagnostic::noConvergence(
+          "SNL_12",
+          fmt::format("no convergence from INST {:g} to INST {:g} after {} cut(s): the tangent matrix became "
+                      "singular in the iterations ({}: {}); {}",
+                      f.startTime, f.time, run.cuts, singular.id, singular.message, kept),
+          call.location);
+      for (const std::string& note : singular.notes) {
+        d.withNote(note);
+      }
+      throw UserError(std::move(d).withNote(fmt::format(
+          "no further cut: {}; a tangent that turns singular in the iterations usually means that "
+          "Newton diverged (refine the list of instants, allow more cuts) or that the material has "
+          "no stiffness left (perfect plasticity at the limit load)",
+          f.reason)));
+    }
     throw UserError(
         Diagnostic::noConvergence(
             "SNL_3",

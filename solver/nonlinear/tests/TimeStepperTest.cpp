@@ -129,5 +129,42 @@ TEST(TimeStepper, ArretStopsAtTheFirstFailureKeepingConvergedSteps) {
   EXPECT_NE(r.log.find("ACTION='ARRET'"), std::string::npos);
 }
 
+// A singular tangent in the iterations (NewtonDriver's StepOutcome::singularTangent) is a failed
+// step like a non-converged one: cut, with the cause in the log; the diagnostic (naming the DOF)
+// stays in the failure for the final message when no cut is left.
+TEST(TimeStepper, SingularTangentInTheIterationsCutsTheStep) {
+  std::ostringstream log;
+  TimeStepper stepper(CutPolicy{}, log);
+  MechanicalState state;
+  auto singularWhenLong = [](const MechanicalState& start, double time, MechanicalState& end) {
+    StepOutcome o;
+    o.iterations = 3;
+    if (time - start.time > 0.3) {
+      o.singularTangent = Diagnostic::fatal("SOLVE_1", "null pivot on DY of node N7");
+      return o;
+    }
+    o.converged = true;
+    end.time = time;
+    return o;
+  };
+  const SteppingResult r = stepper.run(state, {0.0, 1.0}, singularWhenLong, [](const auto&, const auto&) {});
+  EXPECT_TRUE(r.completed);
+  EXPECT_EQ(r.cuts, 1);          // 1.0 -> 4 sub-steps of 0.25
+  EXPECT_EQ(r.computedSteps, 4); // 0.25, 0.5, 0.75, 1.0
+  EXPECT_NE(log.str().find("failed (the tangent matrix became singular at iteration 3); step cut into 4"),
+            std::string::npos)
+      << log.str();
+
+  std::ostringstream log2;
+  CutPolicy arret;
+  arret.subdivide = false;
+  TimeStepper stop(arret, log2);
+  MechanicalState start;
+  const SteppingResult f = stop.run(start, {0.0, 1.0}, singularWhenLong, [](const auto&, const auto&) {});
+  EXPECT_FALSE(f.completed);
+  ASSERT_TRUE(f.failure.outcome.singularTangent.has_value());
+  EXPECT_EQ(f.failure.outcome.singularTangent->id, "SOLVE_1");
+}
+
 } // namespace
 } // namespace stella
