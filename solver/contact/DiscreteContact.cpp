@@ -147,11 +147,14 @@ DualResult solveActiveSet(const ContactProblem& p, StiffnessInverse& k, const Ve
   ActiveCholesky chol(cols);
   std::vector<char> active(static_cast<std::size_t>(m), 0);
   std::vector<char> excluded(static_cast<std::size_t>(m), 0);
-  // Links waiting to enter, most violated first (bilateral ones and the start's before).
+  // Links waiting to enter: the start's (only they: a link they leave violated enters at the
+  // next iteration, so no column is computed for a link that would leave at once), else the
+  // violated ones.
+  const bool warm = start != nullptr && start->lambda.size() == m && m > 0 && start->lambda.maxCoeff() > 0.0;
   std::vector<Index> entering;
   for (Index i = 0; i < m; ++i) {
-    const bool started = start != nullptr && start->lambda.size() == m && start->lambda(i) > 0.0;
-    if (p.isBilateral(i) || started || q(i) < -tol) {
+    const bool started = warm && start->lambda(i) > 0.0;
+    if (p.isBilateral(i) || started || (!warm && q(i) < -tol)) {
       entering.push_back(i);
     }
   }

@@ -264,6 +264,60 @@ TEST(DiscreteContact, IterationCapReported) {
   }
 }
 
+TEST(DiscreteContact, ConstraintActivatesEveryViolatedLinkAtOnce) {
+  // 20 grounded springs k_i pushed by f_i into walls at g_i: every link closes, lambda_i =
+  // f_i - k_i g_i. The links enter together: one iteration (one at a time would take 20), and the
+  // Schur columns are built in ceil(20 / NB_RESOL) solves of NB_RESOL columns.
+  const int m = 20;
+  MatrixXd K = MatrixXd::Zero(m, m);
+  VectorXd f(m);
+  ContactProblem p;
+  MatrixXd a = MatrixXd::Zero(m, m);
+  p.gap.resize(m);
+  for (int i = 0; i < m; ++i) {
+    K(i, i) = 100.0 + 10.0 * i;
+    f(i) = 50.0 + i;
+    a(i, i) = -1.0;
+    p.gap(i) = 0.1 + 0.005 * i;
+  }
+  p.A = rows(a);
+  DenseInverse kinv(K);
+  MatrixXd du0 = f;
+  kinv.solve(du0);
+  const int solvesBefore = kinv.solves;
+  const auto r = solveActiveSet(p, kinv, du0.col(0), DualOptions{});
+  EXPECT_EQ(r.iterations, 1);
+  EXPECT_EQ(r.activeLinks, m);
+  EXPECT_EQ(kinv.solves - solvesBefore, m + 1); // the columns, then du
+  for (int i = 0; i < m; ++i) {
+    EXPECT_NEAR(r.lambda(i), f(i) - K(i, i) * p.gap(i), 1e-10);
+    EXPECT_NEAR(r.du(i), p.gap(i), 1e-13);
+  }
+}
+
+TEST(DiscreteContact, WarmStartFromTheSolutionConvergesAtOnce) {
+  // Started from the multipliers of the solution (the previous Newton iteration's, converged):
+  // CONTRAINTE needs one iteration and only the active links' columns, GCP no iteration at all.
+  const RowCase c;
+  VectorXd lambdaRef;
+  c.reference(lambdaRef);
+  DenseInverse kinv(c.K);
+  MatrixXd du0 = c.f;
+  kinv.solve(du0);
+  const auto p = c.problem();
+  DualStart start;
+  start.lambda = lambdaRef;
+  const auto a = solveActiveSet(p, kinv, du0.col(0), DualOptions{}, &start);
+  EXPECT_EQ(a.iterations, 1);
+  EXPECT_LT((a.lambda - lambdaRef).cwiseAbs().maxCoeff(), 1e-10);
+  DualOptions og;
+  og.tolerance = 1e-9;
+  const auto g = solveProjectedGradient(p, kinv, du0.col(0), og, &start);
+  EXPECT_EQ(g.iterations, 0);
+  EXPECT_EQ(g.solves, 1); // w = K^-1 A^T lambda of the start
+  EXPECT_LT((g.lambda - lambdaRef).cwiseAbs().maxCoeff(), 1e-12);
+}
+
 TEST(DiscreteContact, BilateralLinkPulls) {
   // GLISSIERE: an open link of the bar stays closed and pulls (negative multiplier).
   BarCase bar;
