@@ -63,8 +63,9 @@ mecaTime=$(grep -E "^  [0-9]+ +MECA_STATIQUE" "$mess" | awk '{print $(NF-1)}')
 readTime=$(grep -E "^  [0-9]+ +LIRE_MAILLAGE" "$mess" | awk '{print $(NF-1)}')
 wall=$(grep "Elapsed (wall clock)" "$study.time" | awk '{print $NF}')
 rss=$(grep "Maximum resident set size" "$study.time" | awk '{print $NF}')
+cpu=$(awk -F': ' '/User time|System time/ {s += $2} END {printf "%.1f", s}' "$study.time")
 maxu=$(grep -m1 "max |u|" "$mess" | sed -E 's/.*max \|u\| = ([-0-9.e+]+).*/\1/')
 echo "case=$case_name n=$n solver=$method backend=$backend dofs=$dofs numbering=$(num numbering)" \
   "assembly=$(num assembly) factorisation=$(num factorisation) solve=$(num solve) post=$(num post)" \
   "total=$(num total) peak_mb=$peak meca_statique=$mecaTime lire_maillage=$readTime job_wall=$wall" \
-  "max_rss_kb=$rss max_u=$maxu"
+  "max_rss_kb=$rss cpu_s=$cpu max_u=$maxu"

@@ -5,8 +5,9 @@
 
 Table 1: per run, the phase times of MECA_STATIQUE from the message file, the share outside the
 factorisation and the solve, the peak memory (the log's getrusage and /usr/bin/time's maximum
-RSS). Table 2: per case and solver, the least-squares slope of log(total) against log(DOFs), and
-of the phases outside the factorisation and the solve.
+RSS), the job's CPU seconds (user + system) and wall time. Table 2: per case and solver, the
+least-squares slope against log(DOFs) of log(total), of the phases outside the factorisation and
+the solve, and of the job's CPU time.
 """
 
 import math
@@ -39,16 +40,16 @@ def slope(points):
 def main():
     runs = read(sys.argv[1])
     print("| case | DOFs | solver (backend) | numbering | assembly | factorisation | solve | post | total |"
-          " outside fact.+solve | peak MB (log) | max RSS MB (time -v) |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+          " outside fact.+solve | peak MB (log) | max RSS MB (time -v) | job CPU s (wall) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for r in sorted(runs, key=lambda r: (r["case"], r["dofs"], r["solver"])):
         print(f"| {r['case']} | {r['dofs']} | {r['solver']} ({r['backend']}) | {r['numbering']:.2f} |"
               f" {r['assembly']:.2f} | {r['factorisation']:.2f} | {r['solve']:.2f} | {r['post']:.2f} |"
               f" {r['total']:.2f} | {100 * r['other'] / r['total']:.1f} % | {r['peak_mb']} |"
-              f" {int(r['max_rss_kb']) / 1024:.0f} |")
+              f" {int(r['max_rss_kb']) / 1024:.0f} | {r.get('cpu_s', '-')} ({r['job_wall']}) |")
     print()
-    print("| case | solver | DOFs | slope of total | slope outside fact.+solve |")
-    print("|---|---|---|---|---|")
+    print("| case | solver | DOFs | slope of total | slope outside fact.+solve | slope of job CPU |")
+    print("|---|---|---|---|---|---|")
     groups = {}
     for r in runs:
         groups.setdefault((r["case"], r["solver"]), []).append(r)
@@ -58,7 +59,8 @@ def main():
             continue
         print(f"| {case} | {solver} | {rs[0]['dofs']} - {rs[-1]['dofs']} |"
               f" {slope([(r['dofs'], r['total']) for r in rs]):.2f} |"
-              f" {slope([(r['dofs'], r['other']) for r in rs]):.2f} |")
+              f" {slope([(r['dofs'], r['other']) for r in rs]):.2f} |"
+              f" {slope([(r['dofs'], float(r['cpu_s'])) for r in rs if 'cpu_s' in r]):.2f} |")
     if len(sys.argv) > 2:
         import matplotlib
         matplotlib.use("Agg")
