@@ -84,6 +84,16 @@ NodeId nodeOrThrow(const Mesh& mesh, const std::string& name, const KeywordTree&
   return *n;
 }
 
+CellId cellOrThrow(const Mesh& mesh, const std::string& name, const KeywordTree& occurrence,
+                   const std::string& keyword) {
+  auto c = mesh.findCell(name);
+  if (!c) {
+    throw UserError(Diagnostic::fatal("GROUP_4", fmt::format("the mesh has no cell named '{}'", name),
+                                      occurrence.locationOf(keyword)));
+  }
+  return *c;
+}
+
 std::vector<CellId> selectCells(const Mesh& mesh, const KeywordTree& occurrence) {
   std::vector<CellId> cells;
   if (occurrence.has("TOUT")) {
@@ -100,12 +110,7 @@ std::vector<CellId> selectCells(const Mesh& mesh, const KeywordTree& occurrence)
   }
   if (occurrence.has("MAILLE")) {
     for (const auto& name : occurrence.texts("MAILLE")) {
-      auto c = mesh.findCell(name);
-      if (!c) {
-        throw UserError(Diagnostic::fatal("GROUP_4", fmt::format("the mesh has no cell named '{}'", name),
-                                          occurrence.locationOf("MAILLE")));
-      }
-      cells.push_back(*c);
+      cells.push_back(cellOrThrow(mesh, name, occurrence, "MAILLE"));
     }
   }
   sortUnique(cells);

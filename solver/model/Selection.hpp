@@ -25,6 +25,9 @@ const std::vector<NodeId>& nodeGroupOrThrow(const Mesh& mesh, const std::string&
                                             const KeywordTree& occurrence, const std::string& keyword);
 NodeId nodeOrThrow(const Mesh& mesh, const std::string& name, const KeywordTree& occurrence,
                    const std::string& keyword);
+// The cell named `name`, or UserError GROUP_4 (keyword gives the location).
+CellId cellOrThrow(const Mesh& mesh, const std::string& name, const KeywordTree& occurrence,
+                   const std::string& keyword);
 
 // "A, B, C" (at most `limit` names, then "...").
 std::string listNames(const std::vector<std::string>& names, std::size_t limit = 12);

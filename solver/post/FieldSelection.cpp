@@ -1,6 +1,7 @@
 // FieldSelection: steps, fields, components and entities of results for TEST_RESU and tables.
 
 #include "solver/post/FieldSelection.hpp"
+#include "solver/model/Selection.hpp"
 #include "solver/post/TestReport.hpp"
 
 #include "interpreter/Diagnostics.hpp"
@@ -25,13 +26,18 @@ std::string stepList(const Result& r) {
   return items.empty() ? "none" : fmt::format("{}", fmt::join(items, ", "));
 }
 
-std::size_t singleNodeOfGroup(const Mesh& mesh, const std::string& group, const KeywordTree& occ) {
-  const auto* nodes = mesh.nodeGroup(group);
-  if (nodes == nullptr) {
-    throw UserError(Diagnostic::fatal("GROUP_2",
-                                      fmt::format("the mesh has no node group (GROUP_NO) '{}'", group),
-                                      occ.locationOf("GROUP_NO")));
+// The nodes of every group of GROUP_NO, in order (a node in two groups counts twice).
+std::vector<NodeId> nodesOfGroups(const Mesh& mesh, const KeywordTree& occ) {
+  std::vector<NodeId> nodes;
+  for (const auto& g : occ.texts("GROUP_NO")) {
+    const auto& group = nodeGroupOrThrow(mesh, g, occ, "GROUP_NO");
+    nodes.insert(nodes.end(), group.begin(), group.end());
   }
+  return nodes;
+}
+
+std::size_t singleNodeOfGroup(const Mesh& mesh, const std::string& group, const KeywordTree& occ) {
+  const auto* nodes = &nodeGroupOrThrow(mesh, group, occ, "GROUP_NO");
   if (nodes->size() != 1) {
     throw UserError(
         Diagnostic::fatal("RESU_4",
@@ -48,23 +54,9 @@ EntitySelection cellNodeEntities(const Mesh& mesh, const Field& field, const std
                                  const KeywordTree& occ) {
   std::vector<NodeId> nodes;
   if (occ.has("NOEUD")) {
-    auto n = mesh.findNode(occ.text("NOEUD"));
-    if (!n) {
-      throw UserError(Diagnostic::fatal("GROUP_3",
-                                        fmt::format("the mesh has no node named '{}'", occ.text("NOEUD")),
-                                        occ.locationOf("NOEUD")));
-    }
-    nodes.push_back(*n);
+    nodes.push_back(nodeOrThrow(mesh, occ.text("NOEUD"), occ, "NOEUD"));
   } else {
-    for (const auto& g : occ.texts("GROUP_NO")) {
-      const auto* group = mesh.nodeGroup(g);
-      if (group == nullptr) {
-        throw UserError(Diagnostic::fatal("GROUP_2",
-                                          fmt::format("the mesh has no node group (GROUP_NO) '{}'", g),
-                                          occ.locationOf("GROUP_NO")));
-      }
-      nodes.insert(nodes.end(), group->begin(), group->end());
-    }
+    nodes = nodesOfGroups(mesh, occ);
   }
   EntitySelection s;
   for (CellId c : cells) {
@@ -148,12 +140,7 @@ EntitySelection selectEntities(const Mesh& mesh, const Field& field, const Keywo
   if (field.support() == FieldSupport::Node) {
     if (occ.has("NOEUD")) {
       const std::string name = occ.text("NOEUD");
-      auto n = mesh.findNode(name);
-      if (!n) {
-        throw UserError(Diagnostic::fatal("GROUP_3", fmt::format("the mesh has no node named '{}'", name),
-                                          occ.locationOf("NOEUD")));
-      }
-      return {{static_cast<std::size_t>(*n)}, true, name};
+      return {{static_cast<std::size_t>(nodeOrThrow(mesh, name, occ, "NOEUD"))}, true, name};
     }
     if (occ.has("GROUP_NO") && !occ.has("TYPE_TEST")) {
       const std::string group = occ.texts("GROUP_NO").front();
@@ -162,23 +149,9 @@ EntitySelection selectEntities(const Mesh& mesh, const Field& field, const Keywo
     }
     std::vector<NodeId> nodes;
     if (occ.has("GROUP_NO")) {
-      for (const auto& g : occ.texts("GROUP_NO")) {
-        const auto* group = mesh.nodeGroup(g);
-        if (group == nullptr) {
-          throw UserError(Diagnostic::fatal("GROUP_2",
-                                            fmt::format("the mesh has no node group (GROUP_NO) '{}'", g),
-                                            occ.locationOf("GROUP_NO")));
-        }
-        nodes.insert(nodes.end(), group->begin(), group->end());
-      }
+      nodes = nodesOfGroups(mesh, occ);
     } else if (occ.has("GROUP_MA")) {
-      const auto* cells = mesh.cellGroup(occ.text("GROUP_MA"));
-      if (cells == nullptr) {
-        throw UserError(Diagnostic::fatal(
-            "GROUP_1", fmt::format("the mesh has no cell group (GROUP_MA) '{}'", occ.text("GROUP_MA")),
-            occ.locationOf("GROUP_MA")));
-      }
-      nodes = mesh.nodesOfCells(*cells);
+      nodes = mesh.nodesOfCells(cellGroupOrThrow(mesh, occ.text("GROUP_MA"), occ, "GROUP_MA"));
     } else {
       for (std::size_t n = 0; n < field.entityCount(); ++n) {
         s.entities.push_back(n);
@@ -193,21 +166,9 @@ EntitySelection selectEntities(const Mesh& mesh, const Field& field, const Keywo
   // Per-point and per-cell fields.
   std::vector<CellId> cells;
   if (occ.has("MAILLE")) {
-    auto c = mesh.findCell(occ.text("MAILLE"));
-    if (!c) {
-      throw UserError(Diagnostic::fatal("GROUP_4",
-                                        fmt::format("the mesh has no cell named '{}'", occ.text("MAILLE")),
-                                        occ.locationOf("MAILLE")));
-    }
-    cells.push_back(*c);
+    cells.push_back(cellOrThrow(mesh, occ.text("MAILLE"), occ, "MAILLE"));
   } else if (occ.has("GROUP_MA")) {
-    const auto* group = mesh.cellGroup(occ.text("GROUP_MA"));
-    if (group == nullptr) {
-      throw UserError(Diagnostic::fatal(
-          "GROUP_1", fmt::format("the mesh has no cell group (GROUP_MA) '{}'", occ.text("GROUP_MA")),
-          occ.locationOf("GROUP_MA")));
-    }
-    cells = *group;
+    cells = cellGroupOrThrow(mesh, occ.text("GROUP_MA"), occ, "GROUP_MA");
   } else {
     for (std::size_t c = 0;
          c < (field.support() == FieldSupport::Cell ? field.entityCount() : field.cellCount()); ++c) {
