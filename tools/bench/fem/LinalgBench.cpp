@@ -15,11 +15,11 @@
 #include "solver/fem/ElementMatrices.hpp"
 #include "solver/linalg/LinearSolver.hpp"
 #include "solver/loads/SkinLoads.hpp"
+#include "solver/nonlinear/PhaseTimes.hpp"
 
 #include <chrono>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <string>
@@ -27,17 +27,6 @@
 using namespace stella;
 
 namespace {
-
-double peakMegabytes() {
-  std::ifstream f("/proc/self/status");
-  std::string line;
-  while (std::getline(f, line)) {
-    if (line.rfind("VmHWM:", 0) == 0) {
-      return std::stod(line.substr(6)) / 1024.0;
-    }
-  }
-  return 0.0;
-}
 
 struct Clock {
   std::chrono::steady_clock::time_point t = std::chrono::steady_clock::now();
@@ -101,7 +90,7 @@ int main(int argc, char** argv) {
     }
   }
   t["numbering"] = clock.lap();
-  mem["numbering"] = peakMegabytes();
+  mem["numbering"] = peakResidentMegabytes();
 
   const linalg::MatrixKind kind =
       lagrange ? linalg::MatrixKind::SymmetricIndefinite : linalg::MatrixKind::SymmetricPositiveDefinite;
@@ -110,7 +99,7 @@ int main(int argc, char** argv) {
   const linalg::ElementScatter scatter(*pattern, numbering, cells);
   linalg::SparseMatrix k(pattern);
   t["pattern"] = clock.lap();
-  mem["pattern"] = peakMegabytes();
+  mem["pattern"] = peakResidentMegabytes();
 
   // assembly: stiffness, traction on the face x = 1 (nodal lumping through the skin integral is
   // left to the driver; here the load is a uniform nodal force), constraints
@@ -151,7 +140,7 @@ int main(int argc, char** argv) {
     }
   }
   t["assembly"] = clock.lap();
-  mem["assembly"] = peakMegabytes();
+  mem["assembly"] = peakResidentMegabytes();
 
   linalg::SolverOptions options;
   options.method = *method;
@@ -160,14 +149,14 @@ int main(int argc, char** argv) {
   auto solver = linalg::makeLinearSolver(options, kind);
   solver->analyse(k);
   t["analyse"] = clock.lap();
-  mem["analyse"] = peakMegabytes();
+  mem["analyse"] = peakResidentMegabytes();
   solver->factorise(k);
   t["factorise"] = clock.lap();
-  mem["factorise"] = peakMegabytes();
+  mem["factorise"] = peakResidentMegabytes();
   Eigen::VectorXd u = f;
   solver->solve(u);
   t["solve"] = clock.lap();
-  mem["solve"] = peakMegabytes();
+  mem["solve"] = peakResidentMegabytes();
   const double residual = (k.multiply(u) - f).norm() / f.norm();
   clock.lap();
 
@@ -186,7 +175,7 @@ int main(int argc, char** argv) {
     }
   }
   t["post"] = clock.lap();
-  mem["post"] = peakMegabytes();
+  mem["post"] = peakResidentMegabytes();
 
   const double total =
       t["numbering"] + t["pattern"] + t["assembly"] + t["analyse"] + t["factorise"] + t["solve"] + t["post"];

@@ -16,29 +16,18 @@
 #include "solver/fem/BoxMesh.hpp"
 #include "solver/model/ModelBuilder.hpp"
 #include "solver/nonlinear/MechanicalSystem.hpp"
+#include "solver/nonlinear/PhaseTimes.hpp"
 #include "solver/nonlinear/PointState.hpp"
 
 #include <chrono>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <iostream>
 #include <string>
 
 using namespace stella;
 
 namespace {
-
-double peakMegabytes() {
-  std::ifstream f("/proc/self/status");
-  std::string line;
-  while (std::getline(f, line)) {
-    if (line.rfind("VmHWM:", 0) == 0) {
-      return std::stod(line.substr(6)) / 1024.0;
-    }
-  }
-  return 0.0;
-}
 
 struct Clock {
   std::chrono::steady_clock::time_point t = std::chrono::steady_clock::now();
@@ -128,7 +117,7 @@ int main(int argc, char** argv) {
     }
   }
   const double tMesh = clock.lap();
-  const double mMesh = peakMegabytes();
+  const double mMesh = peakResidentMegabytes();
 
   std::vector<Excitation> ex{{load, nullptr, nullptr}};
   if (!lagrange) {
@@ -139,7 +128,7 @@ int main(int argc, char** argv) {
   options.method = solverName == "MULT_FRONT" ? linalg::SolverMethod::MultFront : linalg::SolverMethod::Mumps;
   system.solver().setOptions(options);
   const double tNumbering = clock.lap();
-  const double mNumbering = peakMegabytes();
+  const double mNumbering = peakResidentMegabytes();
 
   const int np = system.dofs().physicalCount();
   const PointState zero = zeroPointState(system.model(), system.behaviours().maxInternalVariables());
@@ -168,7 +157,7 @@ int main(int argc, char** argv) {
     g = system.relationValues(0.0);
     p = system.eliminatedValues(0.0);
     tAssembly = tElements + clock.lap();
-    mAssembly = peakMegabytes();
+    mAssembly = peakResidentMegabytes();
     system.solver().factorize(k, true, true);
     tFactorise = clock.lap();
   } else {
@@ -184,23 +173,23 @@ int main(int argc, char** argv) {
     g = system.relationValues(0.0);
     p = system.eliminatedValues(0.0);
     tAssembly = tElements + clock.lap();
-    mAssembly = peakMegabytes();
+    mAssembly = peakResidentMegabytes();
     system.solver().factorize(k, true);
     tFactorise = clock.lap();
   }
   const double tNumberingAll = tNumbering + tPattern;
-  const double mFactorise = peakMegabytes();
+  const double mFactorise = peakResidentMegabytes();
 
   Eigen::VectorXd u;
   Eigen::VectorXd lambda;
   system.solver().solve(f, g, p, u, lambda);
   const double tSolve = clock.lap();
-  const double mSolve = peakMegabytes();
+  const double mSolve = peakResidentMegabytes();
 
   PointState state = zero;
   system.assembler().run(none, u, zero, behaviour::Option::Full, {nullptr, nullptr, &state});
   const double tPost = clock.lap();
-  const double mPost = peakMegabytes();
+  const double mPost = peakResidentMegabytes();
 
   const double total = tNumberingAll + tAssembly + tFactorise + tSolve + tPost;
   const double other = tNumberingAll + tAssembly + tPost;
