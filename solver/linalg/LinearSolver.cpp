@@ -54,7 +54,8 @@ int firstNullPivot(const Eigen::Ref<const Eigen::VectorXd>& pivots, int nprec) {
     return -1;
   }
   const double largest = pivots.cwiseAbs().maxCoeff();
-  const double threshold = std::pow(10.0, -nprec) * largest;
+  // NPREC < 0 turns the detection off: only an exactly zero (or not finite) pivot is null
+  const double threshold = nprec < 0 ? 0.0 : std::pow(10.0, -nprec) * largest;
   for (Eigen::Index k = 0; k < pivots.size(); ++k) {
     if (!(std::abs(pivots[k]) > threshold)) {
       return static_cast<int>(k);

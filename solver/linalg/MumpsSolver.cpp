@@ -57,8 +57,11 @@ public:
     id_.icntl[3] = 0;
     id_.icntl[6] = orderingCode(o.renumbering);                    // ICNTL(7)
     id_.icntl[13] = static_cast<int>(std::lround(o.pivotPercent)); // ICNTL(14)
-    id_.icntl[23] = 1;                                             // ICNTL(24): null pivot detection
-    id_.cntl[2] = std::pow(10.0, -o.nprec);                        // CNTL(3): relative threshold
+    // ICNTL(24): null pivot detection, with the relative threshold CNTL(3) = 10^-NPREC; a
+    // negative NPREC turns it off (code_aster's convention): MUMPS then only fails on a pivot
+    // that is exactly zero (INFOG(1) = -10)
+    id_.icntl[23] = o.nprec >= 0 ? 1 : 0;
+    id_.cntl[2] = o.nprec >= 0 ? std::pow(10.0, -o.nprec) : 0.0;
     initialised_ = true;
   }
   ~MumpsSolver() override {
