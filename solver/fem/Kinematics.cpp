@@ -5,9 +5,34 @@
 #include <string>
 
 namespace stella::fem {
+namespace {
+
+// B-bar: B_q += (1/3) m (bbar - tr B_q), m = (1, 1, 1, 0...) on the normal strains, where tr B_q
+// is the volumetric-strain row at point q and bbar its weighted mean over the cell. A strain
+// field with constant trace is left unchanged (patch tests hold).
+void replaceVolumetricByCellMean(ElementKinematics& k) {
+  const Eigen::Index n = k.dofCount;
+  Eigen::RowVectorXd mean = Eigen::RowVectorXd::Zero(n);
+  double volume = 0.0;
+  for (int q = 0; q < k.pointCount(); ++q) {
+    const auto uq = static_cast<std::size_t>(q);
+    mean += k.weights[uq] * k.b[uq].topRows(3).colwise().sum();
+    volume += k.weights[uq];
+  }
+  mean /= volume;
+  for (int q = 0; q < k.pointCount(); ++q) {
+    Eigen::MatrixXd& b = k.b[static_cast<std::size_t>(q)];
+    const Eigen::RowVectorXd correction = (mean - b.topRows(3).colwise().sum()) / 3.0;
+    for (int i = 0; i < 3; ++i) {
+      b.row(i) += correction;
+    }
+  }
+}
+
+} // namespace
 
 void computeKinematics(CellType type, Modelling m, const Eigen::Ref<const Eigen::MatrixXd>& x,
-                       ElementKinematics& out) {
+                       ElementKinematics& out, VolumeStrain volumeStrain) {
   const int dim = spaceDimension(m);
   if (stella::dimension(type) != dim) {
     throw std::invalid_argument(std::string("cell type ") + std::string(name(type)) +
@@ -19,6 +44,7 @@ void computeKinematics(CellType type, Modelling m, const Eigen::Ref<const Eigen:
   const int npg = t.pointCount();
   const int ns = strainSize(m);
   out.modelling = m;
+  out.volumeStrain = volumeStrain;
   out.table = &t;
   out.nodeCount = nno;
   out.dofCount = nno * dim;
@@ -79,6 +105,9 @@ void computeKinematics(CellType type, Modelling m, const Eigen::Ref<const Eigen:
       }
     }
     out.weights[uq] = w;
+  }
+  if (volumeStrain == VolumeStrain::CellMean) {
+    replaceVolumetricByCellMean(out);
   }
 }
 

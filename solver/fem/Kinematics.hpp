@@ -28,6 +28,7 @@ private:
 
 struct ElementKinematics {
   Modelling modelling = Modelling::ThreeD;
+  VolumeStrain volumeStrain = VolumeStrain::Pointwise;
   const ShapeTable* table = nullptr;
   int nodeCount = 0;
   int dofCount = 0;
@@ -39,9 +40,10 @@ struct ElementKinematics {
 
 // Fills `out` (reusing its storage) for a cell of `type` with node coordinates `x`
 // (nodeCount x spaceDimension(m)). Throws DegenerateElementError, or std::invalid_argument when
-// the cell's dimension does not match the modelling.
+// the cell's dimension does not match the modelling. With VolumeStrain::CellMean the B matrices
+// are the mean-dilatation B-bar ones (see Modelling.hpp).
 void computeKinematics(CellType type, Modelling m, const Eigen::Ref<const Eigen::MatrixXd>& x,
-                       ElementKinematics& out);
+                       ElementKinematics& out, VolumeStrain volumeStrain = VolumeStrain::Pointwise);
 
 // Strain vector (engineering shears) at Gauss point q for element displacements u (dofCount).
 inline Eigen::VectorXd strainAt(const ElementKinematics& k, int q,

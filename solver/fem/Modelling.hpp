@@ -15,6 +15,22 @@ namespace stella::fem {
 
 enum class Modelling { ThreeD, PlaneStrain, PlaneStress, Axisymmetric };
 
+// How the volumetric part of the strain is taken at the Gauss points.
+// - Pointwise: the strain of the displacement at the point (fully integrated cells).
+// - CellMean: the mean-dilatation ("B-bar") treatment of the '_SI' modelisations (3D_SI,
+//   D_PLAN_SI, AXIS_SI): the volumetric strain tr(eps) at every point is replaced by its mean
+//   over the cell (weighted like the stiffness integral: by r in AXIS), the deviatoric part is
+//   kept. Equivalent to integrating the volumetric term with one point; the cell can then flow
+//   isochorically (plastic flow, nearly incompressible elasticity) without volumetric locking.
+//   In D_PLAN_SI eps_zz is zero on average over a cell, not at each point.
+enum class VolumeStrain { Pointwise, CellMean };
+
+// A MODELISATION name of AFFE_MODELE read into a modelling and its volumetric treatment.
+struct ModellingVariant {
+  Modelling modelling = Modelling::ThreeD;
+  VolumeStrain volumeStrain = VolumeStrain::Pointwise;
+};
+
 constexpr int spaceDimension(Modelling m) {
   return m == Modelling::ThreeD ? 3 : 2;
 }
@@ -42,6 +58,22 @@ inline std::optional<Modelling> modellingFromName(std::string_view n) {
     if (modellingName(m) == n) {
       return m;
     }
+  }
+  return std::nullopt;
+}
+
+// '3D', 'D_PLAN', 'C_PLAN', 'AXIS' and the mean-dilatation '3D_SI', 'D_PLAN_SI', 'AXIS_SI'.
+inline std::optional<ModellingVariant> modellingVariantFromName(std::string_view n) {
+  constexpr std::string_view suffix = "_SI";
+  if (n.size() > suffix.size() && n.substr(n.size() - suffix.size()) == suffix) {
+    const auto base = modellingFromName(n.substr(0, n.size() - suffix.size()));
+    if (base && *base != Modelling::PlaneStress) {
+      return ModellingVariant{*base, VolumeStrain::CellMean};
+    }
+    return std::nullopt;
+  }
+  if (const auto base = modellingFromName(n)) {
+    return ModellingVariant{*base, VolumeStrain::Pointwise};
   }
   return std::nullopt;
 }

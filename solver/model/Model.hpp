@@ -1,6 +1,7 @@
 #pragma once
 // The data of a `modele` concept (AFFE_MODELE): which cells of the mesh carry a finite element
-// and of which kind. Volume elements of a modelling ('3D', 'D_PLAN', 'C_PLAN', 'AXIS') on the
+// and of which kind. Volume elements of a modelling ('3D', 'D_PLAN', 'C_PLAN', 'AXIS', and the
+// mean-dilatation '3D_SI', 'D_PLAN_SI', 'AXIS_SI') on the
 // cells of the modelling's dimension; skin elements (for pressures, surface forces and contact)
 // on the cells one dimension lower; discrete springs ('DIS_T', '2D_DIS_T') on POI1 cells.
 // Every node touched by an element carries the displacement components DX, DY (, DZ).
@@ -21,7 +22,8 @@ enum class ElementKind : std::uint8_t { None, Volume, Skin, Discrete };
 
 struct ModelCell {
   ElementKind kind = ElementKind::None;
-  fem::Modelling modelling = fem::Modelling::ThreeD; // for Volume and Skin cells
+  fem::Modelling modelling = fem::Modelling::ThreeD;             // for Volume and Skin cells
+  fem::VolumeStrain volumeStrain = fem::VolumeStrain::Pointwise; // Volume cells of the '_SI' modelisations
 };
 
 class Model : public ConceptData {

@@ -37,14 +37,15 @@ int assignDiscrete(Model& model, std::span<const CellId> cells) {
   return count;
 }
 
-int assignContinuum(Model& model, std::span<const CellId> cells, fem::Modelling m) {
+int assignContinuum(Model& model, std::span<const CellId> cells, fem::ModellingVariant variant) {
+  const fem::Modelling m = variant.modelling;
   const int dim = fem::spaceDimension(m);
   int volumes = 0;
   for (CellId c : cells) {
     const int d = dimension(model.mesh->cellType(c));
     auto& cell = model.cells[static_cast<std::size_t>(c)];
     if (d == dim) {
-      cell = {ElementKind::Volume, m};
+      cell = {ElementKind::Volume, m, variant.volumeStrain};
       ++volumes;
     } else if (d == dim - 1 && cell.kind != ElementKind::Volume) {
       cell = {ElementKind::Skin, m};
@@ -67,12 +68,14 @@ void assignModelling(Model& model, std::span<const CellId> cells, const std::str
     }
     return;
   }
-  auto m = fem::modellingFromName(name);
-  if (!m) {
+  const auto variant = fem::modellingVariantFromName(name);
+  if (!variant) {
     throw UserError(
         Diagnostic::fatal("MODEL_1", fmt::format("MODELISATION='{}' is not implemented yet", name), at)
-            .withNote("available: 3D, D_PLAN, C_PLAN, AXIS, DIS_T, 2D_DIS_T"));
+            .withNote("available: 3D, D_PLAN, C_PLAN, AXIS, their mean-dilatation variants 3D_SI, "
+                      "D_PLAN_SI, AXIS_SI, and DIS_T, 2D_DIS_T"));
   }
+  const auto m = std::optional<fem::Modelling>(variant->modelling);
   setComponents(model, fem::spaceDimension(*m), name, at);
   if (model.hasVolume && model.modelling != *m) {
     throw UserError(Diagnostic::fatal("MODEL_3",
@@ -81,7 +84,7 @@ void assignModelling(Model& model, std::span<const CellId> cells, const std::str
                                       at)
                         .withNote("one model carries one volume modelisation"));
   }
-  if (assignContinuum(model, cells, *m) == 0 && !model.hasVolume) {
+  if (assignContinuum(model, cells, *variant) == 0 && !model.hasVolume) {
     throw UserError(
         Diagnostic::fatal("MODEL_2",
                           fmt::format("no cell of the selection has dimension {}, so none can carry "

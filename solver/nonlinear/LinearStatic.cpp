@@ -62,7 +62,8 @@ LinearStaticResult solveLinearStatic(const LinearStaticProblem& pb) {
     const int n = nodeCount(b.type);
     for (int c = 0; c < b.cellCount(); ++c, ++cell) {
       fem::computeKinematics(b.type, pb.modelling,
-                             cellCoordinates(pb.coordinates, b.connectivity.data() + c * n, n), kin);
+                             cellCoordinates(pb.coordinates, b.connectivity.data() + c * n, n), kin,
+                             pb.volumeStrain);
       fem::stiffness(kin, d, ke);
       scatter.add(cell, ke, k.values());
     }

@@ -42,6 +42,7 @@ struct PressureLoad { // PRES_REP on skin cells (normal from the skin's node ord
 
 struct LinearStaticProblem {
   fem::Modelling modelling = fem::Modelling::ThreeD;
+  fem::VolumeStrain volumeStrain = fem::VolumeStrain::Pointwise;
   Eigen::MatrixXd coordinates; // nodeCount x spaceDimension
   std::vector<CellBlock> volumes;
   behaviour::ElasticParameters material;

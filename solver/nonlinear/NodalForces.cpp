@@ -16,7 +16,8 @@ Eigen::VectorXd forcesFromStress(const Model& model, const DofMap& dofs, const F
   std::vector<Eigen::VectorXd> sigmas;
   Eigen::VectorXd fe;
   for (CellId c : model.cellsOfKind(ElementKind::Volume)) {
-    fem::computeKinematics(mesh.cellType(c), model.cell(c).modelling, cellCoordinates(mesh, c, dim), kin);
+    fem::computeKinematics(mesh.cellType(c), model.cell(c).modelling, cellCoordinates(mesh, c, dim), kin,
+                           model.cell(c).volumeStrain);
     const std::size_t first = stress.firstPoint(static_cast<std::size_t>(c));
     sigmas.resize(static_cast<std::size_t>(kin.pointCount()));
     for (int q = 0; q < kin.pointCount(); ++q) {

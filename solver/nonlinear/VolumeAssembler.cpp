@@ -93,7 +93,8 @@ AssemblyStatus VolumeAssembler::run(const Eigen::VectorXd& uStart, const Eigen::
     const fem::Modelling m = model_.cell(c).modelling;
     const int ns = fem::strainSize(m);
     try {
-      fem::computeKinematics(mesh.cellType(c), m, cellCoordinates(mesh, c, dim), kin);
+      fem::computeKinematics(mesh.cellType(c), m, cellCoordinates(mesh, c, dim), kin,
+                             model_.cell(c).volumeStrain);
     } catch (const fem::DegenerateElementError& e) {
       throw UserError(
           Diagnostic::fatal("ELEM_1",

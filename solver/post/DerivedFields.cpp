@@ -148,7 +148,8 @@ Field strainAtGaussPoints(const Model& model, const Field& depl, const MaterialF
     const auto cell = static_cast<CellId>(c);
     const fem::Modelling modelling = model.cell(cell).modelling;
     try {
-      fem::computeKinematics(mesh.cellType(cell), modelling, coordinates(mesh, cell, dim), kin);
+      fem::computeKinematics(mesh.cellType(cell), modelling, coordinates(mesh, cell, dim), kin,
+                             model.cell(cell).volumeStrain);
     } catch (const fem::DegenerateElementError& e) {
       throw UserError(
           Diagnostic::fatal("CALC_8", fmt::format("cell {} has a non-positive Jacobian ({}) at its "

@@ -16,6 +16,7 @@ namespace {
 struct Case {
   CellType type;
   Modelling modelling;
+  VolumeStrain volumeStrain = VolumeStrain::Pointwise;
 };
 
 std::vector<Case> allCases() {
@@ -30,11 +31,21 @@ std::vector<Case> allCases() {
       cases.push_back({t, m});
     }
   }
+  // the mean-dilatation cells of 3D_SI, D_PLAN_SI, AXIS_SI
+  for (CellType t : {CellType::HEXA8, CellType::HEXA20, CellType::PENTA6, CellType::TETRA4}) {
+    cases.push_back({t, Modelling::ThreeD, VolumeStrain::CellMean});
+  }
+  for (CellType t : {CellType::TRIA3, CellType::QUAD4, CellType::QUAD8, CellType::QUAD9}) {
+    for (Modelling m : {Modelling::PlaneStrain, Modelling::Axisymmetric}) {
+      cases.push_back({t, m, VolumeStrain::CellMean});
+    }
+  }
   return cases;
 }
 
 std::string label(const Case& c) {
-  return std::string(name(c.type)) + "/" + std::string(modellingName(c.modelling));
+  return std::string(name(c.type)) + "/" + std::string(modellingName(c.modelling)) +
+         (c.volumeStrain == VolumeStrain::CellMean ? "_SI" : "");
 }
 
 // Moves interior nodes by a smooth function of position (so that quadratic cells get curved
@@ -104,7 +115,7 @@ TEST(ElementPatch, ConstantStrainIsReproducedExactly) {
       for (int a = 0; a < npc; ++a) {
         x.row(a) = mesh.coordinates.row(mesh.cell(e)[a]);
       }
-      ASSERT_NO_THROW(computeKinematics(c.type, c.modelling, x, kin)) << label(c);
+      ASSERT_NO_THROW(computeKinematics(c.type, c.modelling, x, kin, c.volumeStrain)) << label(c);
       stiffness(kin, d, ke);
       for (int a = 0; a < npc; ++a) {
         for (int b = 0; b < npc; ++b) {
@@ -179,7 +190,7 @@ TEST(ElementStiffness, NullSpaceIsRigidBodyMotions) {
       x.col(0).array() += 3.0;
     }
     ElementKinematics kin;
-    computeKinematics(c.type, c.modelling, x, kin);
+    computeKinematics(c.type, c.modelling, x, kin, c.volumeStrain);
     Eigen::MatrixXd k;
     stiffness(kin, behaviour::elasticMatrix(c.modelling, mat), k);
     EXPECT_LT((k - k.transpose()).cwiseAbs().maxCoeff(), 1e-14 * k.cwiseAbs().maxCoeff()) << label(c);

@@ -60,6 +60,24 @@ TEST(Model, AssignsVolumeAndSkinElements) {
   EXPECT_FALSE(model.nodeActive(6));
 }
 
+// 'AXIS_SI' is the AXIS modelling with the mean-dilatation volumetric strain on its volume cells.
+TEST(Model, SelectiveIntegrationVariantsKeepTheModelling) {
+  auto mesh = twoQuads();
+  Model model(mesh);
+  const std::vector<CellId> all{0, 1, 2};
+  assignModelling(model, all, "AXIS_SI", {});
+  finishModel(model, {});
+  EXPECT_EQ(model.modelling, fem::Modelling::Axisymmetric);
+  for (CellId c : model.cellsOfKind(ElementKind::Volume)) {
+    EXPECT_EQ(model.cell(c).volumeStrain, fem::VolumeStrain::CellMean);
+  }
+  Model plain(mesh);
+  assignModelling(plain, all, "D_PLAN", {});
+  EXPECT_EQ(plain.cell(0).volumeStrain, fem::VolumeStrain::Pointwise);
+  Model noStress(mesh);
+  EXPECT_EQ(errorId([&] { assignModelling(noStress, all, "C_PLAN_SI", {}); }), "MODEL_1");
+}
+
 TEST(Model, RefusesWhatCannotBeCarried) {
   auto mesh = twoQuads();
   Model model(mesh);
