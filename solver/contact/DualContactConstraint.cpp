@@ -17,14 +17,10 @@ public:
   SaddleStiffness(SaddleSolver& solver, Eigen::Index relations, Eigen::Index equations)
       : solver_(solver), zeroRelations_(Eigen::VectorXd::Zero(relations)),
         zeroPrescribed_(Eigen::VectorXd::Zero(equations)) {}
+  // All the columns in one backend call (NB_RESOL right-hand sides per solve).
   void solve(Eigen::Ref<Eigen::MatrixXd> rhs) override {
-    for (Eigen::Index j = 0; j < rhs.cols(); ++j) {
-      Eigen::VectorXd x;
-      Eigen::VectorXd y;
-      solver_.solve(rhs.col(j), zeroRelations_, zeroPrescribed_, x, y);
-      rhs.col(j) = x;
-      ++solves;
-    }
+    solver_.solveHomogeneous(rhs);
+    solves += static_cast<int>(rhs.cols());
   }
   // x = K^-1 f and the multipliers' part y.
   void solveWithMultipliers(const Eigen::VectorXd& f, Eigen::VectorXd& x, Eigen::VectorXd& y) {

@@ -333,6 +333,27 @@ void SaddleSolver::solve(const Eigen::VectorXd& r, const Eigen::VectorXd& g,
   dlambda = scale_ * x.tail(m);
 }
 
+void SaddleSolver::solveHomogeneous(Eigen::Ref<Eigen::MatrixXd> rhs) {
+  const Eigen::Index n = dofs_.physicalCount();
+  const Eigen::Index m = static_cast<Eigen::Index>(rows_.size());
+  Eigen::MatrixXd x = Eigen::MatrixXd::Zero(n + m, rhs.cols());
+  x.topRows(n) = rhs;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (eliminated_[static_cast<std::size_t>(i)]) {
+      x.row(i).setZero();
+    }
+  }
+  const auto start = Clock::now();
+  solver_->solve(x);
+  timings_.solve += secondsSince(start);
+  if (!x.allFinite()) {
+    throw UserError(Diagnostic::fatal("SOLVE_3", "the linear solve produced non-finite values")
+                        .withNote("the system is probably singular or badly conditioned: check the boundary "
+                                  "conditions and the material parameters"));
+  }
+  rhs = x.topRows(n);
+}
+
 Eigen::VectorXd SaddleSolver::transposeTimes(const Eigen::VectorXd& lambda) const {
   Eigen::VectorXd out = Eigen::VectorXd::Zero(dofs_.physicalCount());
   for (std::size_t r = 0; r < rows_.size(); ++r) {

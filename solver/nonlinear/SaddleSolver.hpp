@@ -76,6 +76,11 @@ public:
   void solve(const Eigen::VectorXd& r, const Eigen::VectorXd& g, const Eigen::VectorXd& prescribed,
              Eigen::VectorXd& du, Eigen::VectorXd& dlambda);
 
+  // Solves K x = b for the columns of `rhs` (physical size) in ONE call of the backend, with
+  // homogeneous relations and zero prescribed increments (the Schur columns of discrete
+  // contact, NB_RESOL per call); `rhs` is overwritten by the physical part of the solutions.
+  void solveHomogeneous(Eigen::Ref<Eigen::MatrixXd> rhs);
+
   // C^T lambda (physical size): the reactions of the multipliers.
   Eigen::VectorXd transposeTimes(const Eigen::VectorXd& lambda) const;
   // C u (one per row).
