@@ -260,17 +260,27 @@ void SaddleSolver::factorize(const StiffnessMatrix& k, bool symmetric) {
     if (!solver_ || solver_->kind() != kind) {
       solver_ = linalg::makeLinearSolver(options_, kind);
       analysed_.reset();
+      factorisedValues_.clear();
     }
     if (analysed_ != bordered_.sharedPattern()) {
       const auto t = Clock::now();
       solver_->analyse(bordered_);
       analysed_ = bordered_.sharedPattern();
+      factorisedValues_.clear();
       timings_.analysis += secondsSince(t);
       ++timings_.analyses;
     }
+    if (factorisedValues_ == bordered_.values()) {
+      // The values already factorised (elastic bodies under dual contact, whose tangent does not
+      // change between iterations): the factors are reused, the solution is the same.
+      ++reusedFactorizations_;
+      return;
+    }
+    factorisedValues_.clear();
     const auto t = Clock::now();
     solver_->factorise(bordered_);
     timings_.factorisation += secondsSince(t);
+    factorisedValues_.assign(bordered_.values().begin(), bordered_.values().end());
   } catch (const linalg::SingularMatrixError& e) {
     // Only now the (costly) diagnosis that names the free node and component.
     checkSingularity(k.toEigen());

@@ -21,7 +21,7 @@
 // LDL^T and a pivot that loses more than 8 digits relative to its diagonal names the node and
 // component left free (UserError SOLVE_1, the message code_aster's STOP_SINGULIER gives, in
 // words). The factorisation is kept for further right-hand sides (contact sub-iterations, line
-// search).
+// search). A factorize() call with the values already factorised keeps the factors.
 
 #include "solver/mesh/Mesh.hpp"
 #include "solver/nonlinear/DofMap.hpp"
@@ -88,6 +88,9 @@ public:
 
   const std::vector<bool>& eliminated() const { return eliminated_; }
   int factorizations() const { return factorizations_; }
+  // Calls of factorize() that found the values already factorised and kept the factors (not
+  // counted in factorizations()).
+  int reusedFactorizations() const { return reusedFactorizations_; }
 
 private:
   void checkSingularity(const Eigen::SparseMatrix<double>& k) const;
@@ -120,6 +123,8 @@ private:
   std::vector<std::pair<int, double>> dofTerms_;              // (relation, coefficient)
   std::vector<std::vector<std::pair<int, double>>> rowTerms_; // per relation: (DOF, coefficient)
   int factorizations_ = 0;
+  int reusedFactorizations_ = 0;
+  std::vector<double> factorisedValues_; // the bordered matrix's values at the last factorisation
   Timings timings_;
 };
 

@@ -174,9 +174,12 @@ Value runStatNonLine(OperatorCall& call) {
         progress.show(c.time, c.index, c.cuts);
       });
   progress.erase();
-  msg << fmt::format("   linear solver: {}, {} factorisation(s); {} step(s) computed, {} cut(s)\n",
-                     system.solver().backendName(), system.solver().factorizations(), run.computedSteps,
-                     run.cuts);
+  const int reused = system.solver().reusedFactorizations();
+  msg << fmt::format("   linear solver: {}, {} factorisation(s){}; {} step(s) computed, {} cut(s)\n",
+                     system.solver().backendName(), system.solver().factorizations(),
+                     reused > 0 ? fmt::format(" (the factors kept {} time(s): unchanged matrix)", reused)
+                                : "",
+                     run.computedSteps, run.cuts);
   if (!run.completed) {
     if (!lastStored) {
       store(*result, state, system, constraint.get());

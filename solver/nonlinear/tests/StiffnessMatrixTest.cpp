@@ -179,6 +179,13 @@ TEST(StiffnessMatrix, SaddleSolverAnalysesOnlyWhenThePatternGrows) {
       EXPECT_EQ(system.solver().timings().analyses, 1);
       system.solver().factorize(inPlace(system, true));
       EXPECT_EQ(system.solver().timings().analyses, 1) << method;
+      // the same values again (an elastic tangent): the factors are kept, the solution is the same
+      EXPECT_EQ(system.solver().factorizations(), 1) << method;
+      EXPECT_EQ(system.solver().reusedFactorizations(), 1) << method;
+      Eigen::VectorXd uAgain;
+      Eigen::VectorXd lambdaAgain;
+      system.solver().solve(f, g, p, uAgain, lambdaAgain);
+      EXPECT_EQ((uAgain - u).cwiseAbs().maxCoeff(), 0.0) << method;
       // a penalty spring between two far nodes (a contact pair): new pattern, new analysis
       StiffnessMatrix& k = inPlace(system, true);
       const int a = system.dofs().physicalCount() - 1;
@@ -187,6 +194,7 @@ TEST(StiffnessMatrix, SaddleSolverAnalysesOnlyWhenThePatternGrows) {
       k.add({{a, b, -c}, {b, a, -c}, {a, a, c}, {b, b, c}});
       system.solver().factorize(k);
       EXPECT_EQ(system.solver().timings().analyses, 2) << method;
+      EXPECT_EQ(system.solver().factorizations(), 2) << method;
       Eigen::VectorXd u2;
       Eigen::VectorXd lambda2;
       system.solver().solve(f, g, p, u2, lambda2);
