@@ -144,6 +144,39 @@ TEST(LinearSolver, SaddlePointWithLagrangeMultipliers) {
   EXPECT_THROW(makeLinearSolver(gcpc, MatrixKind::SymmetricIndefinite), LinearSolverError);
 }
 
+// Blocks of very sparse right-hand sides (a few entries per column, like the columns of A^T of
+// discrete contact) go to MUMPS as sparse right-hand sides: the same solutions as the dense
+// solve, including empty columns and the multipliers' rows of a saddle-point system.
+TEST(LinearSolver, SparseRightHandSideBlocksSolveLikeDenseOnes) {
+  for (bool lagrange : {false, true}) {
+    Problem p(lagrange, false, Storage::Upper);
+    if (!lagrange) {
+      for (int i = 0; i < p.matrix.size(); ++i) {
+        p.matrix.add(i, i, 10.0);
+        p.dense(i, i) += 10.0;
+      }
+    }
+    SolverOptions o;
+    o.method = SolverMethod::Mumps;
+    auto s = makeLinearSolver(o, lagrange ? MatrixKind::SymmetricIndefinite
+                                          : MatrixKind::SymmetricPositiveDefinite);
+    s->analyse(p.matrix);
+    s->factorise(p.matrix);
+    const int n = p.matrix.size();
+    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(n, 12);
+    for (int j = 0; j < 11; ++j) { // column 11 stays empty
+      b((7 * j) % n, j) = 1.0 + j;
+      b((7 * j + 3) % n, j) = -0.5;
+    }
+    ASSERT_LT((b.array() != 0.0).count() * 20, b.size()); // sparse enough for the sparse path
+    const Eigen::MatrixXd reference = p.dense.fullPivLu().solve(b);
+    Eigen::MatrixXd x = b;
+    s->solve(x);
+    EXPECT_LT((x - reference).norm(), 1e-10 * reference.norm()) << (lagrange ? "saddle" : "SPD");
+    EXPECT_EQ(x.col(11).cwiseAbs().maxCoeff(), 0.0);
+  }
+}
+
 TEST(LinearSolver, UnsymmetricSystems) {
   Problem p(true, false, Storage::Full);
   // a friction-like unsymmetric coupling: K(i, i+2) += 0.3 k_ii for entries in the pattern
