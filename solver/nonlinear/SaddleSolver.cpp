@@ -329,16 +329,8 @@ void SaddleSolver::solve(const Eigen::VectorXd& r, const Eigen::VectorXd& g,
       b(i) = scale_ * p(i);
     }
   }
-  const auto start = Clock::now();
   Eigen::VectorXd x = b;
-  Eigen::Map<Eigen::MatrixXd> column(x.data(), x.size(), 1);
-  solver_->solve(column);
-  timings_.solve += secondsSince(start);
-  if (!x.allFinite()) {
-    throw UserError(Diagnostic::fatal("SOLVE_3", "the linear solve produced non-finite values")
-                        .withNote("the system is probably singular or badly conditioned: check the boundary "
-                                  "conditions and the material parameters"));
-  }
+  solveBordered(Eigen::Map<Eigen::MatrixXd>(x.data(), x.size(), 1));
   du = x.head(n);
   dlambda = scale_ * x.tail(m);
 }
@@ -353,6 +345,11 @@ void SaddleSolver::solveHomogeneous(Eigen::Ref<Eigen::MatrixXd> rhs) {
       x.row(i).setZero();
     }
   }
+  solveBordered(x);
+  rhs = x.topRows(n);
+}
+
+void SaddleSolver::solveBordered(Eigen::Ref<Eigen::MatrixXd> x) {
   const auto start = Clock::now();
   solver_->solve(x);
   timings_.solve += secondsSince(start);
@@ -361,7 +358,6 @@ void SaddleSolver::solveHomogeneous(Eigen::Ref<Eigen::MatrixXd> rhs) {
                         .withNote("the system is probably singular or badly conditioned: check the boundary "
                                   "conditions and the material parameters"));
   }
-  rhs = x.topRows(n);
 }
 
 Eigen::VectorXd SaddleSolver::transposeTimes(const Eigen::VectorXd& lambda) const {

@@ -93,6 +93,9 @@ public:
   int reusedFactorizations() const { return reusedFactorizations_; }
 
 private:
+  // Solves the bordered system in place with the last factorisation (timed); SOLVE_3 on a
+  // non-finite solution.
+  void solveBordered(Eigen::Ref<Eigen::MatrixXd> x);
   void checkSingularity(const Eigen::SparseMatrix<double>& k) const;
   // Per physical DOF, the (relation, coefficient) of the relations holding it (free DOFs only);
   // per relation, its (DOF, coefficient) terms on free DOFs, sorted and merged.
