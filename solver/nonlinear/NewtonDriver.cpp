@@ -255,7 +255,30 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
        << (rhoColumn ? " RHO      |" : "") << "\n";
   log_ << "   " << rule << "\n";
   double rho = 1.0;
-  std::string matrixNote = predict(start, time, fext, g, imposed, du, lambda);
+  std::string matrixNote;
+  try {
+    matrixNote = predict(start, time, fext, g, imposed, du, lambda);
+  } catch (const UserError& e) {
+    // A singular prediction tangent after converged steps: the matrix is the tangent of the last
+    // converged state, which a shorter step cannot change, so the run stops at once; but the
+    // state the material reached is the likely cause, not a free motion of the model: say it
+    // first.
+    if (e.first().id != "SOLVE_1" || convergedSteps_ == 0 || settings_.prediction == Prediction::Elastic ||
+        !settings_.tangentMatrix) {
+      throw;
+    }
+    Diagnostic d = e.first();
+    d.notes.insert(
+        d.notes.begin(),
+        fmt::format("the matrix is the tangent of the last converged state (INST {:g}), after {} converged "
+                    "step(s): perfectly plastic points (D_SIGM_EPSI = 0) have no stiffness along their flow, "
+                    "and a region that flows freely (a limit load, or an incompressible flow the "
+                    "mean-dilatation '_SI' cells allow) makes it singular; NEWTON=_F(MATRICE='ELASTIQUE') "
+                    "with a larger CONVERGENCE ITER_GLOB_ELAS iterates with the elastic matrix, which "
+                    "stays regular (a shorter step would not change this matrix)",
+                    start.time, convergedSteps_));
+    throw UserError(std::move(d));
+  }
   // The geometric loop of a constraint extends the iteration budget by ITER_GLOB_MAXI per
   // re-pairing; the constraint bounds the number of re-pairings (ITER_GEOM_MAXI).
   int lastIteration = settings_.iterGlobMaxi;

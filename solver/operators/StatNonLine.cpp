@@ -150,29 +150,41 @@ Value runStatNonLine(OperatorCall& call) {
   TimeStepper stepper(cuts, msg);
   stepper.onAttempt([&](double, double) { progress.erase(); });
   bool lastStored = true;
-  const SteppingResult run = stepper.run(
-      state, times,
-      [&](const MechanicalState& s, double t, MechanicalState& e) { return driver.step(s, t, e); },
-      [&](const MechanicalState& s, const ConvergedStep& c) {
-        if (constraint != nullptr) {
-          constraint->reportStep(msg);
-        }
-        lastStored = c.last || archive.selects(c.index, c.time);
-        const std::string stored =
-            lastStored ? fmt::format("stored as NUME_ORDRE {}",
-                                     store(*result, s, system, constraint.get(), c.outcome.iterations))
-                       : std::string("not stored (ARCHIVAGE)");
-        msg << fmt::format(
-            "   step {} INST {:g}{}: converged in {} iteration(s), RESI_GLOB_RELA = {:.3e}{}, {}\n", c.index,
-            c.time, c.level > 0 ? fmt::format(" (sub-step, level {})", c.level) : "", c.outcome.iterations,
-            c.outcome.resiRela,
-            c.outcome.lineSearchIterations > 0
-                ? fmt::format(", {} line search iteration(s)", c.outcome.lineSearchIterations)
-                : "",
-            stored);
-        msg.flush();
-        progress.show(c.time, c.index, c.cuts);
-      });
+  SteppingResult run;
+  try {
+    run = stepper.run(
+        state, times,
+        [&](const MechanicalState& s, double t, MechanicalState& e) { return driver.step(s, t, e); },
+        [&](const MechanicalState& s, const ConvergedStep& c) {
+          if (constraint != nullptr) {
+            constraint->reportStep(msg);
+          }
+          lastStored = c.last || archive.selects(c.index, c.time);
+          const std::string stored =
+              lastStored ? fmt::format("stored as NUME_ORDRE {}",
+                                       store(*result, s, system, constraint.get(), c.outcome.iterations))
+                         : std::string("not stored (ARCHIVAGE)");
+          msg << fmt::format(
+              "   step {} INST {:g}{}: converged in {} iteration(s), RESI_GLOB_RELA = {:.3e}{}, {}\n",
+              c.index, c.time, c.level > 0 ? fmt::format(" (sub-step, level {})", c.level) : "",
+              c.outcome.iterations, c.outcome.resiRela,
+              c.outcome.lineSearchIterations > 0
+                  ? fmt::format(", {} line search iteration(s)", c.outcome.lineSearchIterations)
+                  : "",
+              stored);
+          msg.flush();
+          progress.show(c.time, c.index, c.cuts);
+        });
+  } catch (const UserError&) {
+    // An error in a step (a singular matrix, a failed behaviour...): the steps stored so far
+    // stay in the result, and the end of the message file says where.
+    progress.erase();
+    call.session.noteKeptResult(
+        fmt::format("{}: {} step(s) stored, up to INST {:g} (the run stopped on an error "
+                    "during STAT_NON_LINE)",
+                    call.resultName, result->steps.size(), result->steps.back().time));
+    throw;
+  }
   progress.erase();
   const int reused = system.solver().reusedFactorizations();
   msg << fmt::format("   linear solver: {}, {} factorisation(s){}; {} step(s) computed, {} cut(s)\n",
@@ -197,14 +209,18 @@ Value runStatNonLine(OperatorCall& call) {
                       "singular in the iterations ({}: {}); {}",
                       f.startTime, f.time, run.cuts, singular.id, singular.message, kept),
           call.location);
-      for (const std::string& note : singular.notes) {
-        d.withNote(note);
-      }
-      throw UserError(std::move(d).withNote(fmt::format(
+      d.withNote(fmt::format(
           "no further cut: {}; a tangent that turns singular in the iterations usually means that "
           "Newton diverged (refine the list of instants, allow more cuts) or that the material has "
-          "no stiffness left (perfect plasticity at the limit load)",
-          f.reason)));
+          "no stiffness left: perfectly plastic points (D_SIGM_EPSI = 0) have none along their flow, "
+          "and a region that flows freely (a limit load, or an incompressible flow the mean-dilatation "
+          "'_SI' cells allow) makes the tangent singular; NEWTON=_F(MATRICE='ELASTIQUE') with a larger "
+          "CONVERGENCE ITER_GLOB_ELAS iterates with the elastic matrix, which stays regular",
+          f.reason));
+      for (const std::string& note : singular.notes) { // if the model itself has a free motion
+        d.withNote(note);
+      }
+      throw UserError(std::move(d));
     }
     throw UserError(
         Diagnostic::noConvergence(

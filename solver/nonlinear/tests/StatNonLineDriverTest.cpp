@@ -370,3 +370,59 @@ FIN()
 
 } // namespace
 } // namespace stella
+
+namespace stella {
+namespace {
+
+// The ssnv506-like indentation with the mean-dilatation AXIS_SI cells on a coarse mesh (contact
+// cells of 50 mm): perfectly plastic cells that flow freely leave the prediction tangent of a
+// later step singular (a null pivot at a free surface node by the contact). A shorter step
+// cannot change that matrix (the tangent of the last converged state), so the run stops with
+// SOLVE_1, results kept; its first note says that the plastic state is the likely cause and
+// what to do (MATRICE='ELASTIQUE'), before the notes on free motions.
+TEST(StatNonLineDriver, SingularPredictionAfterPlasticFlowNamesThePlasticState) {
+  const std::string comm = R"(
+DEBUT()
+MA = LIRE_MAILLAGE(FORMAT='GMSH', UNITE=20)
+MA = MODI_MAILLAGE(reuse=MA, MAILLAGE=MA, ORIE_PEAU=_F(GROUP_MA_PEAU=('S_CONT', 'M_CONT')))
+MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='AXIS_SI'))
+ACIER = DEFI_MATERIAU(ELAS=_F(E=2.1e7, NU=0.3))
+MASSIF = DEFI_MATERIAU(ELAS=_F(E=210000.0, NU=0.3), ECRO_LINE=_F(SY=50.0, D_SIGM_EPSI=0.0))
+CM = AFFE_MATERIAU(MAILLAGE=MA, AFFE=(_F(GROUP_MA='SPHERE', MATER=ACIER), _F(GROUP_MA='MASSIF', MATER=MASSIF)))
+MA = DEFI_GROUP(reuse=MA, MAILLAGE=MA, CREA_GROUP_NO=_F(NOM='M_AXE_L', DIFFE=('M_AXE', 'M_BASE')))
+APPUIS = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=(_F(GROUP_MA='M_BASE', DX=0.0, DY=0.0),
+                                              _F(GROUP_NO=('M_AXE_L', 'S_AXE'), DX=0.0)))
+ENFONCE = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='S_TOP', DY=-100.0))
+RAMPE = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0))
+L_INST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=(_F(JUSQU_A=0.01, NOMBRE=5), _F(JUSQU_A=0.15, NOMBRE=24),
+                                               _F(JUSQU_A=1.0, NOMBRE=17)))
+CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='DISCRETE', ZONE=_F(GROUP_MA_MAIT='S_CONT', GROUP_MA_ESCL='M_CONT'))
+RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, CONTACT=CONT,
+                     EXCIT=(_F(CHARGE=APPUIS), _F(CHARGE=ENFONCE, FONC_MULT=RAMPE)),
+                     COMPORTEMENT=(_F(RELATION='VMIS_ISOT_LINE', GROUP_MA='MASSIF'),
+                                   _F(RELATION='ELAS', GROUP_MA='SPHERE')),
+                     INCREMENT=_F(LIST_INST=L_INST), CONVERGENCE=_F(ITER_GLOB_MAXI=30))
+FIN()
+)";
+  auto run =
+      testing::runStudy("singular_prediction", comm, "solver/nonlinear/tests/data/indentation_h50.msh");
+  const std::string mess = run->mess();
+  EXPECT_EQ(run->failure(), FailureKind::Error) << mess.substr(mess.size() > 3000 ? mess.size() - 3000 : 0);
+  const auto solve = mess.find("[SOLVE_1]");
+  ASSERT_NE(solve, std::string::npos);
+  const auto plastic = mess.find("the matrix is the tangent of the last converged state", solve);
+  const auto freeMotion = mess.find("block the free motions", solve);
+  ASSERT_NE(plastic, std::string::npos);
+  EXPECT_LT(plastic, freeMotion); // the likely cause first
+  EXPECT_NE(mess.find("MATRICE='ELASTIQUE'", solve), std::string::npos);
+  // the converged steps are kept, and the session says so (the end of the message file of a job)
+  const auto& kept = run->session->keptResults();
+  ASSERT_EQ(kept.size(), 1u);
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(kept[0], m, std::regex("RESU: ([0-9]+) step\\(s\\) stored, up to INST")))
+      << kept[0];
+  EXPECT_GT(std::stoi(m[1]), 30);
+}
+
+} // namespace
+} // namespace stella
