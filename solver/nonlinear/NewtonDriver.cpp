@@ -4,6 +4,7 @@
 #include "solver/nonlinear/NewtonDriver.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/nonlinear/PhaseTimes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -57,7 +58,10 @@ void NewtonDriver::factorize(const MechanicalState& start, const Eigen::VectorXd
                              behaviour::Option option, bool first) {
   (void)first;
   StiffnessMatrix& k = system_.stiffness(symmetric());
-  system_.assembler().run(start.displacement, du, start.points, option, {nullptr, nullptr, nullptr, &k});
+  {
+    PhaseClock clock(system_.phases().assembly);
+    system_.assembler().run(start.displacement, du, start.points, option, {nullptr, nullptr, nullptr, &k});
+  }
   factorizeMatrix(k, start.displacement + du);
 }
 
@@ -107,7 +111,11 @@ AssemblyStatus NewtonDriver::residual(const MechanicalState& start, const Eigen:
   Eigen::VectorXd& fint = out.internalForces != nullptr ? *out.internalForces : local;
   fint.setZero(n);
   out.internalForces = &fint;
-  const AssemblyStatus status = system_.assembler().run(start.displacement, du, start.points, option, out);
+  AssemblyStatus status;
+  {
+    PhaseClock clock(system_.phases().assembly);
+    status = system_.assembler().run(start.displacement, du, start.points, option, out);
+  }
   r = fext - fint - system_.solver().transposeTimes(lambda) + constraintForces(start.displacement + du);
   const auto& eliminated = system_.solver().eliminated();
   for (int i = 0; i < n; ++i) {

@@ -17,12 +17,13 @@ double peakResidentMegabytes() {
 
 std::string formatPhases(const PhaseTimes& t, int analyses) {
   const double total = t.total();
-  const double other = t.numbering + t.assembly + t.post;
+  const double outside = t.numbering + t.assembly + t.post + t.other;
   return fmt::format("   phases (s): numbering {:.3f}, assembly {:.3f}, factorisation {:.3f} ({} analysis), "
-                     "solve {:.3f}, post {:.3f}; total {:.3f}, outside factorisation and solve {:.1f} %\n"
+                     "solve {:.3f}, post {:.3f}{}; total {:.3f}, outside factorisation and solve {:.1f} %\n"
                      "   peak memory: {:.0f} MB\n",
-                     t.numbering, t.assembly, t.factorisation, analyses, t.solve, t.post, total,
-                     total > 0.0 ? 100.0 * other / total : 0.0, peakResidentMegabytes());
+                     t.numbering, t.assembly, t.factorisation, analyses, t.solve, t.post,
+                     t.other > 0.0 ? fmt::format(", other {:.3f}", t.other) : std::string(), total,
+                     total > 0.0 ? 100.0 * outside / total : 0.0, peakResidentMegabytes());
 }
 
 } // namespace stella

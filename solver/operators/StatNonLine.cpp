@@ -15,6 +15,7 @@
 #include "solver/nonlinear/Archiving.hpp"
 #include "solver/nonlinear/CommandInputs.hpp"
 #include "solver/nonlinear/NewtonDriver.hpp"
+#include "solver/nonlinear/PhaseTimes.hpp"
 #include "solver/nonlinear/ProgressLine.hpp"
 #include "solver/nonlinear/ResultFields.hpp"
 #include "solver/nonlinear/ResultLoads.hpp"
@@ -23,6 +24,7 @@
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 
+#include <chrono>
 #include <fmt/format.h>
 
 namespace stella {
@@ -78,8 +80,9 @@ std::shared_ptr<Result> resultFor(OperatorCall& call, const std::shared_ptr<cons
 
 // Stores a state as the next step of the result (NUME_ORDRE 0 for the first), with the number
 // of Newton iterations as parameter ITER_GLOB.
-int store(Result& result, const MechanicalState& s, const MechanicalSystem& system,
+int store(Result& result, const MechanicalState& s, MechanicalSystem& system,
           const StepConstraint* constraint, int iterations = 0) {
+  PhaseClock clock(system.phases().post);
   ResultStep& step = result.addStep(s.time, 0);
   step.parameters["ITER_GLOB"] = iterations;
   storeMechanicalFields(step, system.model(), system.dofs(), s.displacement, s.points, true, true);
@@ -109,8 +112,11 @@ Value runStatNonLine(OperatorCall& call) {
   refuseUnsupportedKeywords(kw);
   auto model = readModel(kw);
   auto materials = readMaterialField(kw, *model);
+  const auto commandStart = std::chrono::steady_clock::now();
   MechanicalSystem system(model, materials, readExcitations(kw), relationsOf(kw, *model), call.location,
                           readCaraElem(kw));
+  system.phases().numbering +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - commandStart).count();
   system.solver().setOptions(readSolverOptions(kw));
   auto reusedResult = call.reused ? conceptData<Result>(call.reused) : nullptr;
   const auto initialStep = readInitialStep(kw, reusedResult);
@@ -192,6 +198,16 @@ Value runStatNonLine(OperatorCall& call) {
                      reused > 0 ? fmt::format(" (the factors kept {} time(s): unchanged matrix)", reused)
                                 : "",
                      run.computedSteps, run.cuts);
+  {
+    PhaseTimes phases = system.phases();
+    const auto& solverTimes = system.solver().timings();
+    phases.factorisation = solverTimes.bordering + solverTimes.analysis + solverTimes.factorisation;
+    phases.solve = solverTimes.solve;
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - commandStart).count();
+    phases.other = std::max(0.0, elapsed - phases.total());
+    msg << formatPhases(phases, solverTimes.analyses);
+  }
   if (!run.completed) {
     if (!lastStored) {
       store(*result, state, system, constraint.get());

@@ -303,6 +303,19 @@ FIN()
     EXPECT_EQ(factorisations(run->mess()), expected) << "REAC_INCR=" << reacIncr;
     // linear elasticity: every prediction matrix is the first one, factorised once
     EXPECT_EQ(factorisationsDone(run->mess()), 1) << "REAC_INCR=" << reacIncr;
+    // the phase line of the command: its phases add up to the command's time
+    std::smatch m;
+    const std::string mess = run->mess();
+    ASSERT_TRUE(std::regex_search(mess, m,
+                                  std::regex("phases \\(s\\): numbering ([0-9.]+), assembly ([0-9.]+), "
+                                             "factorisation ([0-9.]+) \\(1 analysis\\), solve ([0-9.]+), "
+                                             "post ([0-9.]+)(, other ([0-9.]+))?; total ([0-9.]+)")))
+        << mess;
+    double sum = 0.0;
+    for (int i : {1, 2, 3, 4, 5, 7}) {
+      sum += m[i].matched ? std::stod(m[i]) : 0.0;
+    }
+    EXPECT_NEAR(sum, std::stod(m[8]), 0.006); // each printed with 3 decimals
   }
 }
 
