@@ -270,7 +270,7 @@ void SaddleSolver::factorize(const StiffnessMatrix& k, bool symmetric) {
       timings_.analysis += secondsSince(t);
       ++timings_.analyses;
     }
-    if (factorisedValues_ == bordered_.values()) {
+    if (keepUnchanged_ && factorisedValues_ == bordered_.values()) {
       // The values already factorised (elastic bodies under dual contact, whose tangent does not
       // change between iterations): the factors are reused, the solution is the same.
       ++reusedFactorizations_;
@@ -280,7 +280,9 @@ void SaddleSolver::factorize(const StiffnessMatrix& k, bool symmetric) {
     const auto t = Clock::now();
     solver_->factorise(bordered_);
     timings_.factorisation += secondsSince(t);
-    factorisedValues_.assign(bordered_.values().begin(), bordered_.values().end());
+    if (keepUnchanged_) {
+      factorisedValues_.assign(bordered_.values().begin(), bordered_.values().end());
+    }
   } catch (const linalg::SingularMatrixError& e) {
     // Only now the (costly) diagnosis that names the free node and component.
     checkSingularity(k.toEigen());

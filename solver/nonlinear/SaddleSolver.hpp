@@ -21,7 +21,7 @@
 // LDL^T and a pivot that loses more than 8 digits relative to its diagonal names the node and
 // component left free (UserError SOLVE_1, the message code_aster's STOP_SINGULIER gives, in
 // words). The factorisation is kept for further right-hand sides (contact sub-iterations, line
-// search). A factorize() call with the values already factorised keeps the factors.
+// search). On request, a factorize() call with the values already factorised keeps the factors.
 
 #include "solver/mesh/Mesh.hpp"
 #include "solver/nonlinear/DofMap.hpp"
@@ -88,6 +88,13 @@ public:
 
   const std::vector<bool>& eliminated() const { return eliminated_; }
   int factorizations() const { return factorizations_; }
+  // With `keep`, factorize() compares the values with those it last factorised and keeps the
+  // factors when they are equal (STAT_NON_LINE: elastic bodies under dual contact); it holds a
+  // copy of the values for that, so a single solve (MECA_STATIQUE) leaves it off.
+  void keepFactorsOfUnchangedMatrix(bool keep) {
+    keepUnchanged_ = keep;
+    factorisedValues_.clear();
+  }
   // Calls of factorize() that found the values already factorised and kept the factors (not
   // counted in factorizations()).
   int reusedFactorizations() const { return reusedFactorizations_; }
@@ -127,7 +134,8 @@ private:
   std::vector<std::vector<std::pair<int, double>>> rowTerms_; // per relation: (DOF, coefficient)
   int factorizations_ = 0;
   int reusedFactorizations_ = 0;
-  std::vector<double> factorisedValues_; // the bordered matrix's values at the last factorisation
+  bool keepUnchanged_ = false;
+  std::vector<double> factorisedValues_; // with keepUnchanged_: the values of the last factorisation
   Timings timings_;
 };
 

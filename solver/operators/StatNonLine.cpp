@@ -118,6 +118,7 @@ Value runStatNonLine(OperatorCall& call) {
   system.phases().numbering +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - commandStart).count();
   system.solver().setOptions(readSolverOptions(kw));
+  system.solver().keepFactorsOfUnchangedMatrix(true); // Newton asks for a matrix many times
   auto reusedResult = call.reused ? conceptData<Result>(call.reused) : nullptr;
   const auto initialStep = readInitialStep(kw, reusedResult);
   std::shared_ptr<const InstantList> list;

@@ -159,6 +159,7 @@ TEST(StiffnessMatrix, SaddleSolverAnalysesOnlyWhenThePatternGrows) {
       o.method = *linalg::solverMethodFromName(method);
       MechanicalSystem& system = *s.system;
       system.solver().setOptions(o);
+      system.solver().keepFactorsOfUnchangedMatrix(true);
       const Eigen::VectorXd f = system.externalForces(0.0);
       const Eigen::VectorXd g = system.relationValues(0.0);
       const Eigen::VectorXd p = system.eliminatedValues(0.0);
@@ -175,6 +176,11 @@ TEST(StiffnessMatrix, SaddleSolverAnalysesOnlyWhenThePatternGrows) {
         reference.factorize(viaTriplets(system), true);
         reference.solve(f, g, p, u0, lambda0);
         EXPECT_LE((u - u0).cwiseAbs().maxCoeff(), 1e-12 * u0.cwiseAbs().maxCoeff()) << method;
+        // by default (a single solve, MECA_STATIQUE) no copy is kept and the same matrix is
+        // factorised again
+        reference.factorize(viaTriplets(system), false);
+        EXPECT_EQ(reference.factorizations(), 2) << method;
+        EXPECT_EQ(reference.reusedFactorizations(), 0) << method;
       }
       EXPECT_EQ(system.solver().timings().analyses, 1);
       system.solver().factorize(inPlace(system, true));
