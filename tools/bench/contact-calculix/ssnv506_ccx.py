@@ -8,7 +8,7 @@ pressure-overclosure. Prints the reaction on the driven arc S_TOP at t = 0.2 ...
 radian = F * 90 / pi: checked with --elastic against stella and the Hertz closed form, see the
 testcase README).
 
-Usage: /usr/bin/python3 ssnv506_ccx.py [--work DIR] [--elastic] [--sphere-e E] [--mesh MSH]
+Usage: /usr/bin/python3 ssnv506_ccx.py [--work DIR] [--elastic] [--sphere-e E] [--mesh MSH] [--times T,T...]
                                        [--contact node|surface|mortar] [--reduced] [--penalty K (N/mm^3, <= 0: HARD)]
 """
 
@@ -77,7 +77,7 @@ def write(mesh, path, elastic, sphere_e, contact, penalty, depth, times, reduced
               "*BOUNDARY", "M_BASE, 1, 2, 0.", "M_AXE, 1, 1, 0.", "S_AXE, 1, 1, 0.",
               "*AMPLITUDE, NAME=RAMPE", "0., 0., 1., 1.",
               "*TIME POINTS, NAME=TP", ", ".join(f"{t:g}" for t in times),
-              "*STEP, INC=2000", "*STATIC", "0.005, 1., 1e-7, 0.01",
+              "*STEP, INC=2000", "*STATIC", f"0.005, {max(times):g}, 1e-7, 0.01",
               "*BOUNDARY, AMPLITUDE=RAMPE", f"S_TOP, 2, 2, {-depth:g}",
               "*NODE PRINT, NSET=S_TOP, TOTALS=ONLY, TIME POINTS=TP", "RF",
               "*NODE PRINT, NSET=M_BASE, TOTALS=ONLY, TIME POINTS=TP", "RF",
@@ -107,11 +107,13 @@ def main():
     ap.add_argument("--reduced", action="store_true", help="CAX4R/CAX8R (reduced integration)")
     ap.add_argument("--contact", default="node", choices=tuple(CONTACT_TYPE))
     ap.add_argument("--penalty", type=float, default=1e6, help="N/mm^3; <= 0: HARD")
+    ap.add_argument("--times", default=None,
+                    help="output instants, comma-separated; the run stops at the last (default 0.2,...,1)")
     a = ap.parse_args()
     work = pathlib.Path(a.work)
     work.mkdir(parents=True, exist_ok=True)
     depth = 2.0 if a.elastic else 100.0
-    times = (1.0,) if a.elastic else TIMES
+    times = (1.0,) if a.elastic else (tuple(float(t) for t in a.times.split(",")) if a.times else TIMES)
     write(Mesh(a.mesh), work / "ssnv506.inp", a.elastic, a.sphere_e, a.contact, a.penalty, depth, times,
           a.reduced)
     with open(work / "ccx.log", "w") as log:
