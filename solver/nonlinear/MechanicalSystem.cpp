@@ -107,4 +107,12 @@ StiffnessMatrix& MechanicalSystem::stiffness(bool symmetric) {
   return *k;
 }
 
+PhaseTimes MechanicalSystem::phaseTimes() const {
+  PhaseTimes t = phases_;
+  const SaddleSolver::Timings& s = solver_->timings();
+  t.factorisation = s.bordering + s.analysis + s.factorisation;
+  t.solve = s.solve;
+  return t;
+}
+
 } // namespace stella

@@ -54,6 +54,9 @@ public:
 
   // Phase times of the analysis (filled by the drivers; the solver keeps its own).
   PhaseTimes& phases() { return phases_; }
+  // Those phase times completed with the solver's clocks: factorisation (bordering, symbolic
+  // analyses, numerical factorisations) and solve.
+  PhaseTimes phaseTimes() const;
 
 private:
   std::shared_ptr<const Model> model_;

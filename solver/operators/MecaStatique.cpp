@@ -91,11 +91,7 @@ Value runMecaStatique(OperatorCall& call) {
     msg << fmt::format("   stored NUME_ORDRE {} at INST {}: max |u| = {:.6e}\n", step.number, t,
                        s.displacement.size() ? s.displacement.cwiseAbs().maxCoeff() : 0.0);
   }
-  PhaseTimes phases = system.phases();
-  const auto& solverTimes = system.solver().timings();
-  phases.factorisation = solverTimes.bordering + solverTimes.analysis + solverTimes.factorisation;
-  phases.solve = solverTimes.solve;
-  msg << formatPhases(phases, solverTimes.analyses);
+  msg << formatPhases(system.phaseTimes(), system.solver().timings().analyses);
   rememberLoads(result, excitations);
   rememberCharacteristics(result, cara);
   return call.makeConcept(result);

@@ -200,14 +200,11 @@ Value runStatNonLine(OperatorCall& call) {
                                 : "",
                      run.computedSteps, run.cuts);
   {
-    PhaseTimes phases = system.phases();
-    const auto& solverTimes = system.solver().timings();
-    phases.factorisation = solverTimes.bordering + solverTimes.analysis + solverTimes.factorisation;
-    phases.solve = solverTimes.solve;
+    PhaseTimes phases = system.phaseTimes();
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - commandStart).count();
     phases.other = std::max(0.0, elapsed - phases.total());
-    msg << formatPhases(phases, solverTimes.analyses);
+    msg << formatPhases(phases, system.solver().timings().analyses);
   }
   if (!run.completed) {
     if (!lastStored) {
