@@ -3,7 +3,7 @@
 // (solver/post/SkinPressure.hpp), sigma the nodal stress (SIEF_ELGA extrapolated to the cell
 // nodes and averaged at the nodes over the volume cells, as SIEF_NOEU), n on the initial
 // geometry (GEOMETRIE='INITIALE') or on the geometry deformed by the step's DEPL ('DEFORMEE', the
-// default). MAILLAGE is the result's mesh.
+// default). MAILLAGE is the result's mesh. INFO=2 prints the range of PRES of each step.
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/database/Result.hpp"
@@ -14,6 +14,9 @@
 #include "solver/session/Session.hpp"
 
 #include <fmt/format.h>
+
+#include <algorithm>
+#include <limits>
 
 namespace stella {
 
@@ -86,6 +89,22 @@ std::vector<Point3> coordinates(const Mesh& mesh, const ResultStep& step, bool d
   return x;
 }
 
+void printRange(OperatorCall& call, const Field& pres, const ResultStep& step) {
+  double low = std::numeric_limits<double>::infinity();
+  double high = -low;
+  int count = 0;
+  for (std::size_t n = 0; n < pres.entityCount(); ++n) {
+    if (pres.defined(n, 0)) {
+      low = std::min(low, pres.value(n, 0));
+      high = std::max(high, pres.value(n, 0));
+      ++count;
+    }
+  }
+  call.session.message() << fmt::format(
+      "  CALC_PRESSION: NUME_ORDRE {} (INST {}): PRES on {} node(s), from {} to {}\n", step.number, step.time,
+      count, low, high);
+}
+
 Value runCalcPression(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
   const auto concept_ = kw.conceptValue("RESULTAT");
@@ -115,7 +134,11 @@ Value runCalcPression(OperatorCall& call) {
     }
     const Field sigma = averageAtNodes(mesh, extrapolateToCellNodes(*model, *sief, volumes));
     const auto x = coordinates(mesh, *step, deformed, concept_->name, kw);
-    step->fields["PRES_NOEU"] = std::make_shared<Field>(skinPressure(mesh, x, sigma, skin));
+    auto pres = std::make_shared<Field>(skinPressure(mesh, x, sigma, skin));
+    if (kw.integer("INFO") >= 2) {
+      printRange(call, *pres, *step);
+    }
+    step->fields["PRES_NOEU"] = pres;
   }
   call.session.message() << fmt::format(
       "  CALC_PRESSION: PRES_NOEU on {} skin cell(s), {} geometry, stored on {} "

@@ -11,8 +11,9 @@
 // A point on the cylinder's axis takes the frame of the centre of its cell (a node: of the first
 // cell that holds it), as code_aster. An entity where one of the NOM_CMP is absent is left as it
 // is. Without reuse=, the new result holds the selected steps with the changed fields only; with
-// reuse=, the fields are replaced in the result. REPERE='COQUE...', TYPE_CHAM '*_GENE' and
-// LIST_ORDRE are refused as not implemented yet.
+// reuse=, the fields are replaced in the result. TITRE is printed in the message file; INFO=2
+// prints the rotation of each UTILISATEUR frame (rows = local axes). REPERE='COQUE...',
+// TYPE_CHAM '*_GENE' and LIST_ORDRE are refused as not implemented yet.
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/database/Result.hpp"
@@ -506,8 +507,32 @@ Value ofField(OperatorCall& call) {
   return call.makeConcept(out);
 }
 
+// TITRE and, with INFO=2, the rotation of each UTILISATEUR frame.
+void report(OperatorCall& call) {
+  const KeywordTree& kw = call.keywords;
+  if (kw.has("TITRE")) {
+    call.session.message() << "  MODI_REPERE: TITRE " << kw.text("TITRE") << "\n";
+  }
+  if (kw.integer("INFO") < 2 || kw.text("REPERE") != "UTILISATEUR") {
+    return;
+  }
+  const int dim = kw.has("RESULTAT")
+                      ? conceptData<Result>(kw.conceptValue("RESULTAT"))->mesh->dimension()
+                      : conceptData<FieldConcept>(kw.conceptValue("CHAM_GD"))->mesh->dimension();
+  for (const auto& occ : kw.occurrences("AFFE")) {
+    FrameSpec spec;
+    userFrame(occ, dim, spec);
+    call.session.message() << "  MODI_REPERE: frame (rows = local axes in global coordinates)\n";
+    for (const auto& row : spec.fixed) {
+      call.session.message() << fmt::format("    {: .9f} {: .9f} {: .9f}\n", row[0], row[1], row[2]);
+    }
+  }
+}
+
 Value runModiRepere(OperatorCall& call) {
-  return call.keywords.has("RESULTAT") ? ofResult(call) : ofField(call);
+  Value out = call.keywords.has("RESULTAT") ? ofResult(call) : ofField(call);
+  report(call);
+  return out;
 }
 
 } // namespace

@@ -48,7 +48,8 @@ TEST(FrameAndPressure3D, CubeUnderPressure) {
       "R = CALC_CHAMP(reuse=R, RESULTAT=R, CONTRAINTE='SIGM_NOEU')\n"
       "R = CALC_PRESSION(reuse=R, MAILLAGE=MA, RESULTAT=R, GROUP_MA=('ZMAX', 'ZMIN', 'XMAX'), "
       "TOUT_ORDRE='OUI')\n"
-      "T = MODI_REPERE(RESULTAT=R, REPERE='UTILISATEUR', AFFE=_F(ANGL_NAUT=(0.0, 90.0, 0.0)),\n"
+      "T = MODI_REPERE(RESULTAT=R, REPERE='UTILISATEUR', AFFE=_F(ANGL_NAUT=(0.0, 90.0, 0.0)), INFO=2,\n"
+      "    TITRE='cube seen from Z',\n"
       "    MODI_CHAM=_F(NOM_CHAM='SIGM_NOEU', TYPE_CHAM='TENS_3D',\n"
       "                 NOM_CMP=('SIXX', 'SIYY', 'SIZZ', 'SIXY', 'SIXZ', 'SIYZ')))\n"
       "V = MODI_REPERE(RESULTAT=R, REPERE='UTILISATEUR', AFFE=_F(VECT_X=(0.0, 0.0, 1.0), VECT_Y=(0.0, 1.0, "
@@ -79,7 +80,7 @@ TEST(FrameAndPressure3D, CubeUnderPressure) {
   };
   for (const auto& [groups, group, low, high] : pressures) {
     comm += std::string("R = CALC_PRESSION(reuse=R, MAILLAGE=MA, RESULTAT=R, GROUP_MA=") + groups +
-            ", TOUT_ORDRE='OUI')\nTEST_RESU(RESU=(\n";
+            ", TOUT_ORDRE='OUI', INFO=2)\nTEST_RESU(RESU=(\n";
     comm += test("R", "PRES_NOEU", "PRES", std::string("GROUP_MA='") + group + "'", "MIN", low);
     comm += test("R", "PRES_NOEU", "PRES", std::string("GROUP_MA='") + group + "'", "MAX", high);
     comm += "))\n";
@@ -87,6 +88,11 @@ TEST(FrameAndPressure3D, CubeUnderPressure) {
   comm += "FIN()\n";
   const CommRun r = runComm(dir, "cube", comm, {{20, dir / "m.med"}});
   EXPECT_EQ(r.diagnostic, JobDiagnostic::Ok) << r.message;
+  // TITRE, and INFO=2: the frame's rows (x' = -Z, y' = Y, z' = X) and the range of PRES.
+  EXPECT_NE(r.message.find("MODI_REPERE: TITRE cube seen from Z"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("0.000000000  0.000000000 -1.000000000"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("1.000000000  0.000000000  0.000000000"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("PRES on 9 node(s)"), std::string::npos) << r.message;
 }
 
 } // namespace
