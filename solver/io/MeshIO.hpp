@@ -34,7 +34,10 @@ Mesh readMesh(const std::filesystem::path& file, MeshFormat format, const std::s
 // names and the groups as families; `append` adds the mesh to an existing file.
 void writeMedMesh(const std::filesystem::path& file, const Mesh& mesh, const std::string& meshName = "",
                   bool append = false);
-void writeAsterMesh(const std::filesystem::path& file, const Mesh& mesh);
+// ASTER .mail: coordinates with 17 significant digits (readAsterMesh gives back the same doubles),
+// one cell block per run of cells of one type, then the groups; `title` fills the TITRE block.
+void writeAsterMesh(const std::filesystem::path& file, const Mesh& mesh,
+                    const std::vector<std::string>& title = {"written by stella"});
 // Gmsh 2.2 ASCII; each cell group becomes a physical group (a cell in several groups is written
 // once per group with the same element tag, which readGmshMesh merges back into one cell).
 void writeGmshMesh(const std::filesystem::path& file, const Mesh& mesh);

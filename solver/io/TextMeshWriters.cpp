@@ -29,9 +29,14 @@ void finish(std::ofstream& out, const std::filesystem::path& file) {
 
 } // namespace
 
-void writeAsterMesh(const std::filesystem::path& file, const Mesh& mesh) {
+void writeAsterMesh(const std::filesystem::path& file, const Mesh& mesh,
+                    const std::vector<std::string>& title) {
   auto out = openForWriting(file);
-  out << "TITRE\n written by stella\nFINSF\n%\n";
+  out << "TITRE\n";
+  for (const auto& line : title) {
+    out << ' ' << line << '\n';
+  }
+  out << "FINSF\n%\n";
   const bool d2 = mesh.dimension() == 2;
   out << (d2 ? "COOR_2D\n" : "COOR_3D\n");
   for (NodeId n = 0; n < mesh.nodeCount(); ++n) {

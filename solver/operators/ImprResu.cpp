@@ -1,12 +1,15 @@
 // IMPR_RESU: writes meshes and results. FORMAT='MED' (unit 80; successive calls on one unit add
-// to the file), 'RESULTAT' (text tables, unit 8 = the result file), 'GMSH' (unit 37) and 'VTU'
-// (stella's extension: the unit's file is a .pvd collection with one .vtu per step beside it).
+// to the file), 'RESULTAT' (text tables, unit 8 = the result file), 'GMSH' (unit 37), 'VTU'
+// (stella's extension: the unit's file is a .pvd collection with one .vtu per step beside it) and
+// 'ASTER' (unit 26: the mesh of RESU=_F(MAILLAGE=...) as a .mail file that LIRE_MAILLAGE
+// FORMAT='ASTER' reads back; fields in that format are refused as not implemented yet).
 // RESU occurrences: MAILLAGE alone, or RESULTAT with NOM_CHAM, NUME_ORDRE / INST / TOUT_ORDRE
 // and NOM_CMP selections; GROUP_NO / GROUP_MA restrict the rows of FORMAT='RESULTAT'. Gauss points get the
 // coordinates of the code_aster RIGI family.
 
 #include "solver/database/Result.hpp"
 #include "solver/fem/Quadrature.hpp"
+#include "solver/io/MeshIO.hpp"
 #include "solver/io/ResultWriters.hpp"
 #include "solver/operators/MeshOperatorUtil.hpp"
 #include "solver/session/Session.hpp"
@@ -178,10 +181,57 @@ void writeOccurrence(OperatorCall& call, const Target& target, const KeywordTree
   fileStarted = true;
 }
 
+// FORMAT='ASTER': one mesh (RESU=_F(MAILLAGE=...)) per call, written as a .mail file; the title
+// holds the mesh's name and SOUS_TITRE. Fields, MODELE, CARA_ELEM and FORMAT_R (the edit
+// descriptor of field values) are refused: only the mesh is implemented.
+void writeAsterFormat(OperatorCall& call, const std::filesystem::path& path) {
+  const KeywordTree& kw = call.keywords;
+  const auto refuse = [](const KeywordTree& where, const std::string& keyword, const std::string& what) {
+    throw UserError(Diagnostic::fatal("IMPR_RESU_1",
+                                      "IMPR_RESU FORMAT='ASTER' with " + what + " is not implemented yet",
+                                      where.locationOf(keyword))
+                        .withNote("FORMAT='ASTER' writes a mesh: RESU=_F(MAILLAGE=...); write fields with "
+                                  "FORMAT='MED', 'RESULTAT', 'GMSH' or 'VTU'"));
+  };
+  if (kw.has("MODELE")) {
+    refuse(kw, "MODELE", "MODELE");
+  }
+  const auto& occurrences = kw.occurrences("RESU");
+  if (occurrences.size() > 1) {
+    refuse(occurrences[1], "MAILLAGE", "several RESU occurrences (several meshes in one .mail file)");
+  }
+  for (const auto& occ : occurrences) {
+    for (const char* k : {"RESULTAT", "CHAM_GD", "CARA_ELEM"}) {
+      if (occ.has(k)) {
+        refuse(occ, k, k);
+      }
+    }
+    if (const auto* f = occ.simple("FORMAT_R"); f != nullptr && !f->defaulted) {
+      refuse(occ, "FORMAT_R",
+             "FORMAT_R (the format of field values; coordinates are written with 17 "
+             "significant digits)");
+    }
+    const auto mesh = meshConceptOf(occ);
+    const std::string meshName = occ.conceptValue("MAILLAGE")->name;
+    std::vector<std::string> title{"mesh " + meshName + " written by stella IMPR_RESU"};
+    if (occ.has("SOUS_TITRE")) {
+      title.push_back(occ.text("SOUS_TITRE"));
+    }
+    writeAsterMesh(path, *mesh->mesh, title);
+    call.session.message() << "  IMPR_RESU: mesh " << meshName << " written in the ASTER format to "
+                           << path.filename().string() << "\n";
+  }
+}
+
 Value runImprResu(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
   Target target{{}, kw.text("FORMAT")};
-  if (target.format == "IDEAS" || target.format == "ASTER") {
+  if (target.format == "ASTER") {
+    writeAsterFormat(
+        call, call.session.unitPath(static_cast<int>(kw.integer("UNITE")), kw.locationOf("UNITE"), false));
+    return Value();
+  }
+  if (target.format == "IDEAS") {
     throw UserError(Diagnostic::fatal("IMPR_RESU_1",
                                       "IMPR_RESU FORMAT='" + target.format + "' is not implemented yet",
                                       kw.locationOf("FORMAT"))
