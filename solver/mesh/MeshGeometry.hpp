@@ -1,7 +1,8 @@
 #pragma once
 // Geometric quantities of cells from their vertices (straight-sided approximation): centroid,
 // length/area/signed volume, normal of faces and of edges of 2D meshes, and the jacobian
-// determinant at each corner of a volume cell (negative = inverted cell).
+// determinant at each corner of a cell (a volume cell with a negative one is inverted; a 2D
+// face is inverted, folded, when they change sign: see isInverted).
 
 #include "solver/mesh/Mesh.hpp"
 

@@ -126,9 +126,10 @@ Diagnostic unanchoredSkinAlarm(const Mesh& mesh, const KeywordTree& occ, const s
   return Diagnostic::alarm(
              "ORIE_PEAU_4",
              fmt::format("{} skin cell(s) of group(s) {} bound no volume cell and touch no skin cell that "
-                         "does (first: {}): they were only made coherent with each other, like {}",
+                         "does: they were made coherent with each other (following {}), not oriented "
+                         "against a volume",
                          cells.size(), fmt::format("'{}'", fmt::join(groups, "', '")),
-                         mesh.cellName(cells.front()), mesh.cellName(cells.front())),
+                         mesh.cellName(cells.front())),
              occ.location())
       .withNote(
           "check that their normal points out of the body they stand for (for a rigid surface, "
