@@ -4,13 +4,12 @@
 #include "solver/contact/ContactDefinition.hpp"
 
 #include "catalog/KeywordTree.hpp"
-#include "solver/mesh/MeshGeometry.hpp"
+#include "solver/mesh/SkinOrientation.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include <algorithm>
-#include <unordered_map>
 
 namespace stella::contact {
 
@@ -189,55 +188,15 @@ void checkCellDimensions(const Mesh& mesh, const std::vector<CellId>& cells, con
   }
 }
 
-// Volume cells (of dimension mesh dimension) touching each vertex of the given cells.
-std::unordered_map<NodeId, std::vector<CellId>> volumeCellsOfNodes(const Mesh& mesh,
-                                                                   const std::vector<CellId>& cells) {
-  std::unordered_map<NodeId, std::vector<CellId>> map;
-  for (CellId c : cells) {
-    for (NodeId n : mesh.cellNodes(c)) {
-      map.emplace(n, std::vector<CellId>{});
-    }
-  }
-  for (CellId v = 0; v < mesh.cellCount(); ++v) {
-    if (info(mesh.cellType(v)).dimension != mesh.dimension()) {
-      continue;
-    }
-    for (NodeId n : mesh.cellNodes(v)) {
-      auto it = map.find(n);
-      if (it != map.end()) {
-        it->second.push_back(v);
-      }
-    }
-  }
-  return map;
-}
-
-// A volume cell holding every node of skin cell c, or -1.
-CellId boundedVolume(const Mesh& mesh, CellId c, const std::unordered_map<NodeId, std::vector<CellId>>& map) {
-  const auto nodes = mesh.cellNodes(c);
-  for (CellId v : map.at(nodes[0])) {
-    const auto vn = mesh.cellNodes(v);
-    const bool all = std::all_of(nodes.begin(), nodes.end(),
-                                 [&](NodeId n) { return std::find(vn.begin(), vn.end(), n) != vn.end(); });
-    if (all) {
-      return v;
-    }
-  }
-  return -1;
-}
-
 void checkNormals(const Mesh& mesh, const std::vector<CellId>& cells, const std::string& group,
                   const SourceLocation& at) {
-  const auto map = volumeCellsOfNodes(mesh, cells);
+  // The definition of "outward" ORIE_PEAU makes true (SkinOrientation.hpp). A cell bounding no
+  // volume cell (rigid skin) or two (internal skin) has nothing to be checked against.
+  const auto bounded = boundedVolumes(mesh, cells, {});
   std::vector<std::string> inward;
-  for (CellId c : cells) {
-    const CellId v = boundedVolume(mesh, c, map);
-    if (v < 0) {
-      continue; // a skin without a volume (beam-like, rigid skin): nothing to check against
-    }
-    const Point3 out = cellCentroid(mesh, c) - cellCentroid(mesh, v);
-    if (dot(out, cellNormal(mesh, c)) < 0.0) {
-      inward.push_back(mesh.cellName(c));
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (bounded[i].size() == 1 && !bounded[i].front().outward) {
+      inward.push_back(mesh.cellName(cells[i]));
     }
   }
   if (!inward.empty()) {

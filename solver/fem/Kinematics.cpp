@@ -51,6 +51,10 @@ void computeKinematics(CellType type, Modelling m, const Eigen::Ref<const Eigen:
   out.weights.resize(static_cast<std::size_t>(npg));
   out.points.resize(static_cast<std::size_t>(npg));
   out.b.resize(static_cast<std::size_t>(npg));
+  // A 2D cell may be numbered clockwise (as Salome and older meshers write them): like code_aster,
+  // the weights use |det J| and the gradients through J^-1 are right whatever the sign. The sign
+  // must not change inside the cell (a distorted cell); a 3D cell must have det J > 0.
+  double orientation = 1.0;
   for (int q = 0; q < npg; ++q) {
     const auto uq = static_cast<std::size_t>(q);
     const Eigen::MatrixXd& dn = t.gradients[uq];
@@ -59,7 +63,10 @@ void computeKinematics(CellType type, Modelling m, const Eigen::Ref<const Eigen:
     const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3> jac =
         x.transpose() * dn; // dx_i / dxi_j
     const double det = jac.determinant();
-    if (!(det > 0.0)) {
+    if (dim == 2 && q == 0 && det < 0.0) {
+      orientation = -1.0;
+    }
+    if (!(orientation * det > 0.0)) {
       throw DegenerateElementError(q, det);
     }
     const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3> inv = jac.inverse();
@@ -67,7 +74,7 @@ void computeKinematics(CellType type, Modelling m, const Eigen::Ref<const Eigen:
     Eigen::Vector3d p = Eigen::Vector3d::Zero();
     p.head(dim) = x.transpose() * n;
     out.points[uq] = p;
-    double w = t.rule->weights[uq] * det;
+    double w = t.rule->weights[uq] * orientation * det;
     Eigen::MatrixXd& b = out.b[uq];
     b.setZero(ns, nno * dim);
     if (dim == 3) {

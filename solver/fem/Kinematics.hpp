@@ -1,6 +1,6 @@
 #pragma once
 // Small-strain kinematics of one volume element: at each Gauss point of the RIGI rule, the
-// integration weight (w * det J, times r in AXIS), the physical point and the strain-displacement
+// integration weight (w * |det J|, times r in AXIS), the physical point and the strain-displacement
 // matrix B (strainSize x nodeCount*dim, DOFs ordered node by node: DX, DY[, DZ]).
 
 #include "solver/fem/Modelling.hpp"
@@ -12,12 +12,13 @@
 
 namespace stella::fem {
 
-// A cell whose Jacobian is not positive at a Gauss point (inverted or flat cell, or an AXIS
-// cell with a point at r <= 0). The caller names the cell.
+// A cell whose Jacobian is not positive at a Gauss point (3D: inverted or flat cell), vanishes or
+// changes sign inside the cell (2D, where a clockwise cell is accepted), or an AXIS cell with a
+// point at r <= 0. The caller names the cell.
 class DegenerateElementError : public std::runtime_error {
 public:
   DegenerateElementError(int gaussPoint, double detJ)
-      : std::runtime_error("non-positive Jacobian at a Gauss point"), gaussPoint_(gaussPoint), detJ_(detJ) {}
+      : std::runtime_error("degenerate Jacobian at a Gauss point"), gaussPoint_(gaussPoint), detJ_(detJ) {}
   int gaussPoint() const { return gaussPoint_; }
   double jacobian() const { return detJ_; }
 
@@ -32,7 +33,7 @@ struct ElementKinematics {
   const ShapeTable* table = nullptr;
   int nodeCount = 0;
   int dofCount = 0;
-  std::vector<double> weights;         // w * det J (* r)
+  std::vector<double> weights;         // w * |det J| (* r)
   std::vector<Eigen::Vector3d> points; // physical coordinates of the Gauss points
   std::vector<Eigen::MatrixXd> b;      // strain-displacement matrices
   int pointCount() const { return static_cast<int>(weights.size()); }

@@ -146,7 +146,70 @@ void checkDimension(const Mesh& m, const std::vector<CellId>& cells, int dim, co
   }
 }
 
+std::vector<Piece> piecesOf(const Mesh& m, CellId c) {
+  return dimension(m.cellType(c)) == 1 ? linePieces(m, c) : facePieces(m, c);
+}
+
 } // namespace
+
+OrientationSummary propagateOrientation(Mesh& mesh, const std::vector<CellId>& cells,
+                                        const std::vector<bool>& fixed, std::vector<CellId>& unanchored) {
+  std::map<std::pair<NodeId, NodeId>, std::vector<std::pair<std::size_t, int>>> byKey;
+  std::vector<std::vector<Piece>> cellPieces;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    cellPieces.push_back(piecesOf(mesh, cells[i]));
+    for (const auto& p : cellPieces.back()) {
+      byKey[p.key].emplace_back(i, p.sign);
+    }
+  }
+  std::vector<int> flip(cells.size(), -1); // -1 unvisited, 0 keep, 1 reverse
+  OrientationSummary summary;
+  const auto walk = [&](std::deque<std::size_t> queue) {
+    while (!queue.empty()) {
+      const std::size_t i = queue.front();
+      queue.pop_front();
+      for (const auto& p : cellPieces[i]) {
+        const int effective = flip[i] != 0 ? -p.sign : p.sign;
+        for (const auto& [j, sign] : byKey[p.key]) {
+          if (flip[j] < 0) {
+            flip[j] = sign == -effective ? 0 : 1;
+            queue.push_back(j);
+          }
+        }
+      }
+    }
+  };
+  std::deque<std::size_t> anchored;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (fixed[i]) {
+      flip[i] = 0;
+      anchored.push_back(i);
+    }
+  }
+  if (!anchored.empty()) {
+    ++summary.components; // the anchored sets, counted as one
+  }
+  walk(anchored);
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (flip[i] < 0) {
+      unanchored.push_back(cells[i]); // reached from no fixed cell
+    }
+  }
+  for (std::size_t seed = 0; seed < cells.size(); ++seed) {
+    if (flip[seed] < 0) {
+      ++summary.components;
+      flip[seed] = 0;
+      walk({seed});
+    }
+  }
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (flip[i] == 1) {
+      reverseCell(mesh, cells[i]);
+      ++summary.reversed;
+    }
+  }
+  return summary;
+}
 
 OrientationSummary orientShells(Mesh& mesh, const std::vector<CellId>& faces,
                                 const std::optional<Point3>& direction, std::optional<NodeId> node) {

@@ -29,4 +29,12 @@ OrientationSummary orientShells(Mesh& mesh, const std::vector<CellId>& faces,
 OrientationSummary orientLines(Mesh& mesh, const std::vector<CellId>& segments,
                                const std::optional<Point3>& direction, std::optional<NodeId> node);
 
+// Orients every cell of `cells` (faces or segments) whose `fixed` flag is false like the fixed
+// cells of its connected set (faces through shared edges, segments through shared nodes; a cell
+// takes its orientation from the first oriented neighbour reaching it); fixed cells stay as they
+// are. A set without a fixed cell is made coherent with its first cell, and its cells are
+// appended to `unanchored`. Returns the cells reversed and the number of sets.
+OrientationSummary propagateOrientation(Mesh& mesh, const std::vector<CellId>& cells,
+                                        const std::vector<bool>& fixed, std::vector<CellId>& unanchored);
+
 } // namespace stella

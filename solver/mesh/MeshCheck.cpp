@@ -110,12 +110,9 @@ MeshCheckReport checkMesh(const Mesh& mesh, double flatness) {
       r.degenerateCells.push_back(c);
       continue;
     }
-    if (dim == 3 || (dim == 2 && mesh.dimension() == 2)) {
-      const auto j = cornerJacobians(mesh, c);
-      if (std::any_of(j.begin(), j.end(), [](double v) { return v < 0; })) {
-        r.invertedCells.push_back(c);
-        continue;
-      }
+    if ((dim == 3 || (dim == 2 && mesh.dimension() == 2)) && isInverted(mesh, c)) {
+      r.invertedCells.push_back(c);
+      continue;
     }
     if (dim >= 2) {
       const double l = longestEdge(mesh, c);

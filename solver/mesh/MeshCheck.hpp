@@ -1,7 +1,8 @@
 #pragma once
 // VERI_MAIL checks of LIRE_MAILLAGE: duplicate nodes (same position), degenerate cells (a node
-// repeated or an edge of zero length), inverted cells (a negative corner jacobian: volume cells,
-// and faces of a 2D mesh turning clockwise), flat cells (APLAT: measure / longest edge^dim below
+// repeated or an edge of zero length), inverted cells (a negative corner jacobian of a volume
+// cell; a face of a 2D mesh whose corner jacobians change sign, i.e. a folded face: a clockwise
+// face is accepted, as in code_aster), flat cells (APLAT: measure / longest edge^dim below
 // the threshold). Reported as alarms naming the nodes and cells:
 //   MESHCHECK_1 duplicate nodes, MESHCHECK_2 degenerate cells, MESHCHECK_3 inverted cells,
 //   MESHCHECK_4 flat cells.

@@ -140,6 +140,23 @@ std::vector<double> cornerJacobians(const Mesh& mesh, CellId c) {
   return j;
 }
 
+bool isInverted(const Mesh& mesh, CellId c) {
+  const auto j = cornerJacobians(mesh, c);
+  const bool negative = std::any_of(j.begin(), j.end(), [](double v) { return v < 0; });
+  if (dimension(mesh.cellType(c)) == 3) {
+    return negative;
+  }
+  return negative && std::any_of(j.begin(), j.end(), [](double v) { return v > 0; });
+}
+
+int cellWinding(const Mesh& mesh, CellId c) {
+  const CellType t = mesh.cellType(c);
+  if (dimension(t) == 2) {
+    return cellNormal(mesh, c)[2] < 0.0 ? -1 : 1;
+  }
+  return dimension(t) == 3 && cellMeasure(mesh, c) < 0.0 ? -1 : 1;
+}
+
 double aspectRatio(const Mesh& mesh, CellId c) {
   const auto nodes = mesh.cellNodes(c);
   double lo = std::numeric_limits<double>::infinity();

@@ -1,7 +1,8 @@
 #pragma once
 // Geometric quantities of cells from their vertices (straight-sided approximation): centroid,
 // length/area/signed volume, normal of faces and of edges of 2D meshes, and the jacobian
-// determinant at each corner of a volume cell (negative = inverted cell).
+// determinant at each corner of a cell (a volume cell with a negative one is inverted; a 2D
+// face is inverted, folded, when they change sign: see isInverted).
 
 #include "solver/mesh/Mesh.hpp"
 
@@ -42,6 +43,13 @@ Point3 cellNormal(const Mesh& mesh, CellId c);
 // has exactly three edges (every vertex but a pyramid's apex), in reference orientation; for a
 // face of a 2D mesh, the z-component of the cross product of the two edges at each vertex.
 std::vector<double> cornerJacobians(const Mesh& mesh, CellId c);
+// An inverted cell: a volume cell with a negative corner jacobian; a face (2D mesh) whose corner
+// jacobians do not all have one sign (folded). A face turning clockwise is not inverted: code_aster
+// (and stella) accept 2D cells numbered either way.
+bool isInverted(const Mesh& mesh, CellId c);
+// +1 when the cell follows code_aster's orientation (a volume with a positive volume, a face of a
+// 2D mesh turning counter-clockwise in the xy plane), -1 otherwise.
+int cellWinding(const Mesh& mesh, CellId c);
 // Longest over shortest edge (>= 1; infinity for a cell with a zero-length edge).
 double aspectRatio(const Mesh& mesh, CellId c);
 

@@ -50,8 +50,7 @@ MeshStatistics meshStatistics(const Mesh& mesh) {
       ++b;
     }
     ++s.aspectHistogram[b];
-    const auto j = cornerJacobians(mesh, c);
-    if (std::any_of(j.begin(), j.end(), [](double v) { return v < 0; })) {
+    if (isInverted(mesh, c)) {
       ++s.negativeJacobians;
     }
     s.totalMeasure += cellMeasure(mesh, c);

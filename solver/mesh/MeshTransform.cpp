@@ -3,8 +3,10 @@
 #include "solver/mesh/MeshTransform.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/mesh/CellOrientation.hpp"
 #include "solver/mesh/CellTopology.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
+#include "solver/mesh/SkinOrientation.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -155,18 +157,12 @@ void mirrorMesh(Mesh& mesh, const Point3& point, const Point3& axis1, const Poin
   }
 }
 
-int orientSkin(Mesh& mesh, const std::vector<CellId>& skin, const std::vector<CellId>& volumes) {
+SkinOrientationSummary orientSkin(Mesh& mesh, const std::vector<CellId>& skinCells,
+                                  const std::vector<CellId>& volumes) {
   const int top = mesh.dimension() == 2 ? 2 : 3;
-  std::vector<CellId> candidates = volumes;
-  if (candidates.empty()) {
-    for (CellId c = 0; c < mesh.cellCount(); ++c) {
-      if (dimension(mesh.cellType(c)) == top) {
-        candidates.push_back(c);
-      }
-    }
-  }
-  // Skin vertex sets we look for -> the outward vertex cycles of the matching volume faces.
-  std::map<std::vector<NodeId>, std::vector<std::vector<NodeId>>> faces;
+  std::vector<CellId> skin = skinCells;
+  std::sort(skin.begin(), skin.end());
+  skin.erase(std::unique(skin.begin(), skin.end()), skin.end());
   for (const CellId s : skin) {
     const CellType t = mesh.cellType(s);
     if (dimension(t) != top - 1) {
@@ -174,60 +170,30 @@ int orientSkin(Mesh& mesh, const std::vector<CellId>& skin, const std::vector<Ce
                                         "cell " + mesh.cellName(s) + " (" + std::string(name(t)) +
                                             ") is not a skin cell of a " + std::to_string(top) + "D mesh"));
     }
-    const auto n = mesh.cellNodes(s);
-    std::vector<NodeId> key(n.begin(), n.begin() + vertexCount(t));
-    std::sort(key.begin(), key.end());
-    faces.emplace(key, std::vector<std::vector<NodeId>>{});
   }
-  for (const CellId v : candidates) {
-    const CellType t = mesh.cellType(v);
-    if (dimension(t) != top) {
-      continue;
-    }
-    const auto n = mesh.cellNodes(v);
-    for (const auto& f : cellFaces(t)) {
-      const int fv = vertexCount(f.type);
-      std::vector<NodeId> cycle;
-      for (int i = 0; i < fv; ++i) {
-        cycle.push_back(n[static_cast<std::size_t>(f.nodes[static_cast<std::size_t>(i)])]);
-      }
-      std::vector<NodeId> key = cycle;
-      std::sort(key.begin(), key.end());
-      const auto it = faces.find(key);
-      if (it != faces.end()) {
-        it->second.push_back(cycle);
-      }
-    }
-  }
-  int reversed = 0;
-  for (const CellId s : skin) {
-    const CellType t = mesh.cellType(s);
-    const int nv = vertexCount(t);
-    const auto n = mesh.cellNodes(s);
-    std::vector<NodeId> key(n.begin(), n.begin() + nv);
-    std::sort(key.begin(), key.end());
-    const auto& cycles = faces[key];
-    if (cycles.empty()) {
-      throw UserError(
-          Diagnostic::fatal("ORIE_PEAU_1", "skin cell " + mesh.cellName(s) + " bounds no volume cell")
-              .withNote("a skin cell must be a face of a cell of the mesh"));
-    }
-    if (cycles.size() > 1) {
-      throw UserError(Diagnostic::fatal("ORIE_PEAU_2", "skin cell " + mesh.cellName(s) +
+  const auto bounded = boundedVolumes(mesh, skin, volumes);
+  SkinOrientationSummary summary;
+  std::vector<bool> fixed(skin.size(), false);
+  for (std::size_t i = 0; i < skin.size(); ++i) {
+    const auto& sides = bounded[i];
+    if (sides.size() > 1) {
+      throw UserError(Diagnostic::fatal("ORIE_PEAU_2", "skin cell " + mesh.cellName(skin[i]) +
                                                            " lies between two volume cells (internal skin)")
                           .withNote("give the cells of the side the normal must leave (GROUP_MA_INTERNE / "
                                     "GROUP_MA_VOLU / GROUP_MA_SURF)"));
     }
-    // Same orientation when the skin's vertex cycle is a rotation of the outward face cycle.
-    const auto& cycle = cycles.front();
-    const auto pos = static_cast<std::size_t>(std::find(cycle.begin(), cycle.end(), n[0]) - cycle.begin());
-    const bool same = nv == 2 ? cycle[0] == n[0] : cycle[(pos + 1) % cycle.size()] == n[1];
-    if (!same) {
-      reverseCell(mesh, s);
-      ++reversed;
+    if (sides.size() == 1) {
+      fixed[i] = true;
+      if (!sides.front().outward) {
+        reverseCell(mesh, skin[i]);
+        ++summary.reversed;
+      }
     }
   }
-  return reversed;
+  if (std::find(fixed.begin(), fixed.end(), false) != fixed.end()) {
+    summary.reversed += propagateOrientation(mesh, skin, fixed, summary.unanchored).reversed;
+  }
+  return summary;
 }
 
 } // namespace stella

@@ -24,9 +24,18 @@ void mirrorMesh(Mesh& mesh, const Point3& point, const Point3& axis1, const Poin
 
 // ORIE_PEAU: orients every cell of `skin` (faces in 3D, segments in 2D) so that its normal
 // points out of the volume (surface in 2D) cell it bounds, chosen among `volumes` (every cell of
-// the mesh's top dimension when empty). Returns the number of cells reversed. Throws UserError
-// ORIE_PEAU_1 for a skin cell bounding no volume cell, ORIE_PEAU_2 for one bounding two (an
-// internal skin: give the side's cells in `volumes`).
-int orientSkin(Mesh& mesh, const std::vector<CellId>& skin, const std::vector<CellId>& volumes);
+// the mesh's top dimension when empty), whatever that cell's own winding (SkinOrientation.hpp).
+// A skin cell bounding no volume cell (a rigid surface) is oriented coherently with the skin
+// cells of `skin` it is connected to (shared edges in 3D, shared nodes in 2D); a connected set
+// of such cells touching no oriented cell is made coherent within itself and listed in
+// `unanchored` (the caller warns). Throws UserError ORIE_PEAU_2 for a cell bounding two volume
+// cells (an internal skin: give the side's cells in `volumes`), ORIE_PEAU_3 for a cell that is
+// not a skin cell.
+struct SkinOrientationSummary {
+  int reversed = 0;               // cells whose node order was reversed
+  std::vector<CellId> unanchored; // cells oriented only coherently with each other
+};
+SkinOrientationSummary orientSkin(Mesh& mesh, const std::vector<CellId>& skin,
+                                  const std::vector<CellId>& volumes);
 
 } // namespace stella

@@ -73,6 +73,13 @@ Eigen::Map<const Eigen::VectorXd> row(const Field& f, std::size_t point) {
   return Eigen::Map<const Eigen::VectorXd>(s.data(), static_cast<Eigen::Index>(s.size()));
 }
 
+std::string degenerateCellMessage(const Mesh& mesh, CellId c, const fem::DegenerateElementError& e) {
+  const bool plane = dimension(mesh.cellType(c)) == 2;
+  return fmt::format("cell {} ({}) has a {} Jacobian ({:g}) at Gauss point {}", mesh.cellName(c),
+                     name(mesh.cellType(c)), plane ? "vanishing or sign-changing" : "non-positive",
+                     e.jacobian(), e.gaussPoint() + 1);
+}
+
 } // namespace
 
 AssemblyStatus VolumeAssembler::run(const Eigen::VectorXd& uStart, const Eigen::VectorXd& du,
@@ -97,13 +104,11 @@ AssemblyStatus VolumeAssembler::run(const Eigen::VectorXd& uStart, const Eigen::
                              model_.cell(c).volumeStrain);
     } catch (const fem::DegenerateElementError& e) {
       throw UserError(
-          Diagnostic::fatal("ELEM_1",
-                            fmt::format("cell {} ({}) has a non-positive Jacobian ({:g}) at Gauss point {}",
-                                        mesh.cellName(c), name(mesh.cellType(c)), e.jacobian(),
-                                        e.gaussPoint() + 1))
+          Diagnostic::fatal("ELEM_1", degenerateCellMessage(mesh, c, e))
               .withNote(m == fem::Modelling::Axisymmetric
-                            ? "in AXIS the cell must lie in x >= 0 and its nodes turn counter-clockwise"
-                            : "the cell is inverted or flat: check the mesh (node order, duplicated nodes)"));
+                            ? "in AXIS the cell must lie in x >= 0 and must not be flat or folded"
+                            : "the cell is inverted, folded or flat: check the mesh (node order, duplicated "
+                              "nodes); a 2D cell may turn either way but not both"));
     }
     cellDofs(c, dofs);
     const Eigen::VectorXd due = gather(du, dofs);

@@ -13,6 +13,9 @@
 #include "solver/session/Session.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
 
 namespace stella {
 
@@ -108,6 +111,33 @@ void deform(OperatorCall& call, Mesh& mesh, const KeywordTree& occ) {
                                         moved, name, c->name, step->number, step->time);
 }
 
+// ORIE_PEAU_4: skin cells that bound no volume cell and touch no skin cell that does (a rigid
+// surface on its own): oriented coherently among themselves only.
+Diagnostic unanchoredSkinAlarm(const Mesh& mesh, const KeywordTree& occ, const std::vector<CellId>& cells) {
+  std::vector<std::string> groups;
+  for (const auto& g : occ.texts("GROUP_MA_PEAU")) {
+    const auto* ids = mesh.cellGroup(g);
+    if (ids != nullptr && std::any_of(cells.begin(), cells.end(), [&](CellId c) {
+          return std::find(ids->begin(), ids->end(), c) != ids->end();
+        })) {
+      groups.push_back(g);
+    }
+  }
+  return Diagnostic::alarm(
+             "ORIE_PEAU_4",
+             fmt::format("{} skin cell(s) of group(s) {} bound no volume cell and touch no skin cell that "
+                         "does: they were made coherent with each other (following {}), not oriented "
+                         "against a volume",
+                         cells.size(), fmt::format("'{}'", fmt::join(groups, "', '")),
+                         mesh.cellName(cells.front())),
+             occ.location())
+      .withNote(
+          "check that their normal points out of the body they stand for (for a rigid surface, "
+          "towards the body it touches); to choose it, use ORIE_NORM_COQUE with VECT_NORM (faces) or "
+          "ORIE_LIGNE with VECT_TANG (edges), or list these cells in an occurrence with skin cells of a "
+          "volume they touch");
+}
+
 Value runModiMaillage(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
   auto data = meshConceptOf(kw);
@@ -124,9 +154,12 @@ Value runModiMaillage(OperatorCall& call) {
     const auto side =
         occ.has("GROUP_MA_INTERNE") ? cellsOfGroups(mesh, occ, "GROUP_MA_INTERNE") : std::vector<CellId>{};
     try {
-      const int reversed = orientSkin(mesh, skin, side);
-      call.session.message() << fmt::format("   ORIE_PEAU: {} of {} skin cells reoriented\n", reversed,
-                                            skin.size());
+      const auto summary = orientSkin(mesh, skin, side);
+      call.session.message() << fmt::format("   ORIE_PEAU: {} of {} skin cells reoriented\n",
+                                            summary.reversed, skin.size());
+      if (!summary.unanchored.empty()) {
+        call.session.report(unanchoredSkinAlarm(mesh, occ, summary.unanchored));
+      }
     } catch (const UserError& e) {
       Diagnostic d = e.first();
       d.location = occ.location();

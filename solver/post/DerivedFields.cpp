@@ -152,7 +152,7 @@ Field strainAtGaussPoints(const Model& model, const Field& depl, const MaterialF
                              model.cell(cell).volumeStrain);
     } catch (const fem::DegenerateElementError& e) {
       throw UserError(
-          Diagnostic::fatal("CALC_8", fmt::format("cell {} has a non-positive Jacobian ({}) at its "
+          Diagnostic::fatal("CALC_8", fmt::format("cell {} has a degenerate Jacobian ({}) at its "
                                                   "Gauss point {}: its strain cannot be computed",
                                                   mesh.cellName(cell), e.jacobian(), e.gaussPoint() + 1)));
     }

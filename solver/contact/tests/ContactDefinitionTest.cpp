@@ -3,6 +3,8 @@
 
 #include "solver/contact/ContactDefinition.hpp"
 #include "solver/contact/tests/ContactTestMeshes.hpp"
+#include "solver/mesh/MeshGeometry.hpp"
+#include "solver/mesh/MeshTransform.hpp"
 
 #include <gtest/gtest.h>
 
@@ -129,6 +131,32 @@ TEST(ContactDefinition, InwardNormalsPointToOrientation) {
   EXPECT_NE(e.find("B_YMIN"), std::string::npos) << e;
   def->settings.checkNormals = false;
   EXPECT_NO_THROW(checkContactDefinition(*def));
+}
+
+// A 2D mesh whose cells are numbered clockwise (as Salome writes them), contact edges as the
+// mesher left them: after ORIE_PEAU on both groups, VERI_NORM accepts them (one definition of
+// "outward"), and the normals point out of each block (A_YMAX +y, B_YMIN -y).
+TEST(ContactDefinition, OrientedSkinOfClockwiseCellsPassesVeriNorm) {
+  for (const CellType t : {CellType::QUAD4, CellType::QUAD8, CellType::TRIA3, CellType::TRIA6}) {
+    auto mesh = std::make_shared<Mesh>(testing::twoBlocks(t, 2, 3, 0.1));
+    for (CellId c = 0; c < mesh->cellCount(); ++c) {
+      if (info(mesh->cellType(c)).dimension == 2) {
+        reverseCell(*mesh, c);
+      }
+    }
+    reverseCell(*mesh, mesh->cellGroup("A_YMAX")->front()); // one edge mis-oriented
+    for (const char* g : {"A_YMAX", "B_YMIN"}) {
+      orientSkin(*mesh, *mesh->cellGroup(g), {});
+    }
+    auto def = readContactDefinition(definitionTree({zoneTree("A_YMAX", "B_YMIN")}), mesh);
+    EXPECT_NO_THROW(checkContactDefinition(*def)) << name(t);
+    for (const CellId c : *mesh->cellGroup("A_YMAX")) {
+      EXPECT_GT(cellNormal(*mesh, c)[1], 0.0) << name(t);
+    }
+    for (const CellId c : *mesh->cellGroup("B_YMIN")) {
+      EXPECT_LT(cellNormal(*mesh, c)[1], 0.0) << name(t);
+    }
+  }
 }
 
 TEST(ContactDefinition, ThreeDimensionalFacesAccepted) {

@@ -1,5 +1,5 @@
 // VERI_MAIL: a clean structured mesh has no finding; planted duplicates, a degenerate, an
-// inverted and a flat cell are each found and named.
+// inverted and a flat cell are each found and named; a clockwise 2D face is not inverted.
 
 #include "solver/mesh/MeshCheck.hpp"
 #include "solver/mesh/StructuredMesher.hpp"
@@ -49,11 +49,16 @@ TEST(MeshCheck, FindsEveryKindOfProblem) {
   EXPECT_TRUE(checkMesh(m, 1e-6).flatCells.empty());
 }
 
-TEST(MeshCheck, ClockwiseFaceOfA2DMeshIsInverted) {
-  Mesh m = buildStructuredMesh({CellType::QUAD4, {1, 1, 1}, {1, 1, 1}, {0, 0, 0}});
+// A clockwise face of a 2D mesh (as Salome writes them) is accepted, as in code_aster; a folded
+// (bow-tie) face, whose corner jacobians change sign, is inverted.
+TEST(MeshCheck, ClockwiseFaceOfA2DMeshIsAcceptedAFoldedOneIsInverted) {
+  Mesh m = buildStructuredMesh({CellType::QUAD4, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}});
   auto n = m.mutableCellNodes(0);
-  std::swap(n[1], n[3]);
-  EXPECT_EQ(checkMesh(m).invertedCells, std::vector<CellId>{0});
+  std::swap(n[1], n[3]); // clockwise
+  EXPECT_TRUE(checkMesh(m).invertedCells.empty());
+  auto f = m.mutableCellNodes(1);
+  std::swap(f[2], f[3]); // folded
+  EXPECT_EQ(checkMesh(m).invertedCells, std::vector<CellId>{1});
 }
 
 } // namespace

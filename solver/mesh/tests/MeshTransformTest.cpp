@@ -82,16 +82,16 @@ TEST(MeshTransform, OrientSkin3DAnd2D) {
   const auto top = *m.cellGroup("ZMAX");
   reverseCell(m, top[0]);
   reverseCell(m, top[2]);
-  EXPECT_EQ(orientSkin(m, top, {}), 2);
+  EXPECT_EQ(orientSkin(m, top, {}).reversed, 2);
   for (const CellId c : top) {
     EXPECT_GT(cellNormal(m, c)[2], 0.0);
   }
-  EXPECT_EQ(orientSkin(m, top, {}), 0);
+  EXPECT_EQ(orientSkin(m, top, {}).reversed, 0);
 
   Mesh q = buildStructuredMesh({CellType::QUAD8, {2, 2, 1}, {1, 1, 1}, {0, 0, 0}});
   const auto left = *q.cellGroup("XMIN");
   reverseCell(q, left[1]);
-  EXPECT_EQ(orientSkin(q, left, {}), 1);
+  EXPECT_EQ(orientSkin(q, left, {}).reversed, 1);
   for (const CellId c : left) {
     EXPECT_LT(cellNormal(q, c)[0], 0.0);
   }
