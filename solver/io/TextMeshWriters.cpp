@@ -158,6 +158,9 @@ std::optional<MeshFormat> meshFormatFromExtension(const std::filesystem::path& f
   if (ext == ".msh") {
     return MeshFormat::Gmsh;
   }
+  if (ext == ".mgib") {
+    return MeshFormat::Gibi;
+  }
   return std::nullopt;
 }
 
@@ -169,6 +172,8 @@ Mesh readMesh(const std::filesystem::path& file, MeshFormat format, const std::s
     return readAsterMesh(file);
   case MeshFormat::Gmsh:
     return readGmshMesh(file);
+  case MeshFormat::Gibi:
+    return readGibiMesh(file);
   }
   return {};
 }
@@ -184,6 +189,9 @@ void writeMesh(const std::filesystem::path& file, const Mesh& mesh, MeshFormat f
   case MeshFormat::Gmsh:
     writeGmshMesh(file, mesh);
     return;
+  case MeshFormat::Gibi:
+    throwFileError("MESHFILE_5", file,
+                   "writing GIBI files is not implemented yet (write MED, ASTER or GMSH)");
   }
 }
 

@@ -31,8 +31,12 @@ Usage: make_med23.py [output directory]   (default: this script's directory)
 import os
 import sys
 
-import h5py
 import numpy as np
+
+try:
+    import h5py
+except ImportError:  # make_gibi.py uses the meshes only
+    h5py = None
 
 # MED geometry number, MED 2.3 dataset name, code_aster name, node count.
 TYPES = {
@@ -205,6 +209,8 @@ def plate_2d(quadratic):
     ids = {}
     for j in range(n):
         for i in range(n):
+            if quadratic and i == 1 and j % 2 == 1:
+                continue  # the centre of a QUAD8 is no node of the mesh
             fam = 2 if (i, j) == (0, 0) else (1 if j == 0 else (3 if j == n - 1 else 0))
             ids[i, j] = m.node((i * step, j * step), fam)
     k = 2 if quadratic else 1  # grid steps per cell side
@@ -281,11 +287,12 @@ def block_3d():
     return m
 
 
-def zoo():
-    """One cell of every MED 2.3 type on its own nodes (reading test only, not a geometry);
-    each cell type in its own family with groups ALL and the type name; node group FIRST."""
+def zoo(types=tuple(TYPES)):
+    """One cell of every type in `types` on its own nodes (reading test only, not a geometry);
+    each cell type in its own family with groups ALL and the type name; node group FIRST (the
+    nodes of the first cell)."""
     m = Mesh("ZOO", 3)
-    for n, typ in enumerate(TYPES):
+    for n, typ in enumerate(types):
         count = TYPES[typ][2]
         nodes = [m.node((3.0 * n + 0.1 * a, 0.2 * (a % 3), 0.3 * (a % 5)), 1 if n == 0 else 0)
                  for a in range(count)]

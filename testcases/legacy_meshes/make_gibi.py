@@ -1,0 +1,160 @@
+#!/usr/bin/python3
+"""Writes the GIBI (Cast3M SAUVER FORMATTE) test meshes of this folder, from the meshes of
+make_med23.py: gibi_plate_lin, gibi_plate_quad and gibi_block (their ASTER twins are the
+med23_*.mail files) and gibi_zoo (every Cast3M element type stella reads, twin gibi_zoo.mail).
+
+Format (Cast3M's ASCII save file, as LIRE_MAILLAGE(FORMAT='GIBI') reads it):
+  ' ENREGISTREMENT DE TYPE   4' + ' NIVEAU  15 NIVEAU ERREUR   0 DIMENSION   d' + density line
+  ' ENREGISTREMENT DE TYPE   7' + three lines of Cast3M options (not read)
+  ' ENREGISTREMENT DE TYPE   2' + ' PILE NUMERO   p' 'NBRE OBJETS NOMMES' I8 'NBRE OBJETS' I8,
+      names FORMAT(8(1X,A8)), their object indices FORMAT(10I8), then the objects:
+      pile 1 (meshes): per object  type, parts, references, nodes/element, elements  (5I8), the
+        part indices (compound objects, type 0), references, colours, connectivity (10I8);
+      pile 32 (nodes): the count, then the coordinate entry of each node (10I8);
+      pile 33 (coordinates): the count of reals, then x y (z) density per entry (1P,3E22.14).
+  ' ENREGISTREMENT DE TYPE   5' + ' LABEL AUTOMATIQUE :   1'
+Element types (Cast3M number, name): 1 POI1, 2 SEG2, 3 SEG3, 4 TRI3, 6 TRI6, 8 QUA4, 10 QUA8,
+14 CUB8, 15 CU20, 16 PRI6, 17 PR15, 23 TET4, 24 TE10, 25 PYR5, 26 PY13. Quadratic elements
+list their nodes corner, middle, corner, ... along the edges (faces: the bottom face, the
+vertical edges' middles, the top face); TET4, PRI6, PYR5 and their quadratic forms are
+numbered as in MED, CUB8/CU20 as in code_aster (facts of Cast3M's format as used by the
+MED/Salome GIBI converter). GIBI_PERM gives, per type, aster node j = Cast3M node GIBI_PERM[j].
+
+Each run of consecutive cells of one type and one family becomes an unnamed or named mesh
+object; a group spread over several objects becomes a named compound object; each node group a
+named object of POI1 elements. Pile 32 maps node k to coordinate entry N + 1 - k (reversed), so
+that the indirection is exercised.
+
+Usage: make_gibi.py [output directory]   (default: this script's directory)
+"""
+
+import os
+import sys
+
+import make_med23 as meshes
+
+GIBI = {  # MED 2.3 name -> Cast3M number, name
+    "PO1": (1, "POI1"), "SE2": (2, "SEG2"), "SE3": (3, "SEG3"), "TR3": (4, "TRI3"),
+    "TR6": (6, "TRI6"), "QU4": (8, "QUA4"), "QU8": (10, "QUA8"), "HE8": (14, "CUB8"),
+    "H20": (15, "CU20"), "PE6": (16, "PRI6"), "P15": (17, "PR15"), "TE4": (23, "TET4"),
+    "T10": (24, "TE10"), "PY5": (25, "PYR5"), "P13": (26, "PY13"),
+}
+
+GIBI_PERM = {
+    "SE3": [0, 2, 1],
+    "TR6": [0, 2, 4, 1, 3, 5],
+    "QU8": [0, 2, 4, 6, 1, 3, 5, 7],
+    "H20": [0, 2, 4, 6, 12, 14, 16, 18, 1, 3, 5, 7, 8, 9, 10, 11, 13, 15, 17, 19],
+    "PE6": [0, 2, 1, 3, 5, 4],
+    "P15": [0, 4, 2, 9, 13, 11, 5, 3, 1, 6, 7, 8, 14, 12, 10],
+    "TE4": [0, 2, 1, 3],
+    "T10": [0, 4, 2, 9, 5, 3, 1, 6, 8, 7],
+    "PY5": [0, 3, 2, 1, 4],
+    "P13": [0, 6, 4, 2, 12, 7, 5, 3, 1, 8, 11, 10, 9],
+}
+
+
+def gibi_nodes(typ, med_nodes):
+    """Cast3M node list of a cell given in MED order."""
+    n = len(med_nodes)
+    aster = [med_nodes[p] for p in meshes.PERM.get(typ, range(n))]
+    gibi = [0] * n
+    for j, g in enumerate(GIBI_PERM.get(typ, range(n))):
+        gibi[g] = aster[j]
+    return gibi
+
+
+def ints(values):
+    values = list(values)
+    return ["".join("%8d" % v for v in values[i:i + 10]) for i in range(0, len(values), 10)]
+
+
+def names(values):
+    values = list(values)
+    return ["".join(" %-8s" % v for v in values[i:i + 8]) for i in range(0, len(values), 8)]
+
+
+def reals(values):
+    return ["".join("%22.14E" % v for v in values[i:i + 3]) for i in range(0, len(values), 3)]
+
+
+def objects_of(mesh):
+    """(objects, named): objects as (type number, parts, nodes per element, elements);
+    named maps a group name to an object index (1-based)."""
+    objects, runs = [], []
+    for typ, nodes, family in mesh.ordered_cells():
+        if runs and runs[-1][0] == typ and runs[-1][1] == family:
+            runs[-1][2].append(gibi_nodes(typ, nodes))
+        else:
+            runs.append((typ, family, [gibi_nodes(typ, nodes)]))
+    groups = {}
+    for typ, family, cells in runs:
+        objects.append((GIBI[typ][0], [], len(cells[0]), cells))
+        for g in (mesh.families.get(family, ("", []))[1] if family else []):
+            groups.setdefault(g, []).append(len(objects))
+    named = {}
+    for g, parts in sorted(groups.items()):
+        if len(parts) == 1:
+            named[g] = parts[0]
+        else:
+            objects.append((0, parts, 0, []))
+            named[g] = len(objects)
+    node_groups = {}
+    for i, family in enumerate(mesh.node_fam):
+        for g in (mesh.families.get(family, ("", []))[1] if family else []):
+            node_groups.setdefault(g, []).append(i + 1)
+    for g, nodes in sorted(node_groups.items()):
+        objects.append((1, [], 1, [[n] for n in nodes]))
+        named[g] = len(objects)
+    return objects, named
+
+
+def write_gibi(path, mesh):
+    dim = mesh.dim
+    out = [" ENREGISTREMENT DE TYPE   4",
+           " NIVEAU  15 NIVEAU ERREUR   0 DIMENSION   %d" % dim,
+           " DENSITE  0.00000E+00",
+           " ENREGISTREMENT DE TYPE   7",
+           " NOMBRE INFO CASTEM2000   8",
+           " IFOUR  -1 NIFOUR   0 IFOMOD  -1 IECHO   1 IIMPI   0 IOSPI   0 ISOTYP   1",
+           " NSDPGE     0"]
+    objects, named = objects_of(mesh)
+    out.append(" ENREGISTREMENT DE TYPE   2")
+    out.append(" PILE NUMERO   1NBRE OBJETS NOMMES%8dNBRE OBJETS%8d" % (len(named), len(objects)))
+    out += names(named.keys())
+    out += ints(named.values())
+    for number, parts, per, cells in objects:
+        out += ints([number, len(parts), 0, per, len(cells)])
+        out += ints(parts)
+        out += ints([0] * len(cells))  # colours
+        out += ints(n for cell in cells for n in cell)
+    count = len(mesh.nodes)
+    out.append(" ENREGISTREMENT DE TYPE   2")
+    out.append(" PILE NUMERO  32NBRE OBJETS NOMMES%8dNBRE OBJETS%8d" % (0, count))
+    out += ints([count])
+    out += ints(count - k for k in range(count))
+    out.append(" ENREGISTREMENT DE TYPE   2")
+    out.append(" PILE NUMERO  33NBRE OBJETS NOMMES%8dNBRE OBJETS%8d" % (0, 1))
+    values = []
+    for entry in range(count):
+        x = mesh.nodes[count - 1 - entry]
+        values += list(x[:dim]) + [0.0]
+    out += ints([len(values)])
+    out += reals(values)
+    out += [" ENREGISTREMENT DE TYPE   5", "LABEL AUTOMATIQUE :   1"]
+    with open(path, "w") as f:
+        f.write("\n".join(out) + "\n")
+
+
+def main():
+    out = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))
+    for stem, mesh in (("gibi_plate_lin", meshes.plate_2d(False)), ("gibi_plate_quad", meshes.plate_2d(True)),
+                       ("gibi_block", meshes.block_3d())):
+        write_gibi(os.path.join(out, stem + ".mgib"), mesh)
+    zoo = meshes.zoo(tuple(t for t in meshes.TYPES if t != "PO1"))
+    write_gibi(os.path.join(out, "gibi_zoo.mgib"), zoo)
+    meshes.write_mail(os.path.join(out, "gibi_zoo.mail"), zoo)
+
+
+if __name__ == "__main__":
+    main()
