@@ -11,13 +11,13 @@
 //   32  nodes: the count, then the coordinate entry of each node number (FORMAT(10I8)).
 //   33  coordinates: the count of reals, then per coordinate entry the dim coordinates and a
 //       density (FORMAT(1P,3E22.14)).
-// Every other pile is skipped. As code_aster's GIBI conversion does, named objects become
-// groups: GROUP_NO for objects made of points (POI1), GROUP_MA otherwise; unnamed objects only
-// contribute cells. An element listed in several objects is one cell. Cast3M element types and
-// node orders are mapped to code_aster's (quadratic elements list their nodes corner, middle,
-// corner...). Nodes are those used by cells or node groups, in Cast3M number order, named
-// N<number>; cells are numbered in file order. Every malformed line gives MESHFILE_2/3 with the
-// file and line, never a crash.
+// Every other pile is skipped. As code_aster's PRE_GIBI does: every point is a node named
+// N<number>; every element a cell (POI1 included), numbered in file order; every named mesh
+// object a GROUP_MA of the same name (a compound object: the cells of its parts); every named
+// point a GROUP_NO of one node. An element listed again (same type and nodes) is the same cell.
+// Cast3M element types and node orders are mapped to code_aster's (quadratic elements list their
+// nodes corner, middle, corner...); orientations are kept. Every malformed line gives
+// MESHFILE_2/3 with the file and line, never a crash.
 
 #include "solver/io/MeshFileError.hpp"
 #include "solver/io/MeshIO.hpp"
@@ -237,6 +237,8 @@ struct GibiFile {
   int coordinateOfLine = 0;                                // where its entries start
   std::vector<double> coordinates;                         // pile 33
   int namesLine = 0;
+  std::vector<std::pair<std::string, std::int64_t>> pointNames; // pile 32 names and node numbers
+  int pointNamesLine = 0;
 };
 
 std::int64_t numberAfter(GibiLines& in, std::string_view line, std::string_view label) {
@@ -314,6 +316,10 @@ void readPile(GibiLines& in, std::string_view header, GibiFile& f, std::set<std:
     }
     readPile1(in, f, nobjects);
   } else if (pile == 32) {
+    f.pointNamesLine = namesLine;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      f.pointNames.emplace_back(names[i], indices[i]);
+    }
     const auto n = in.count(in.integers(1, "the node count of pile 32")[0], "the node count");
     f.coordinateOfLine = in.line() + 1;
     f.coordinateOf = in.integers(n, "the coordinate entries of the nodes (pile 32)");
@@ -368,50 +374,34 @@ GibiFile parseGibi(const std::filesystem::path& file) {
   return f;
 }
 
-struct Built {
-  std::vector<std::vector<CellId>> cells;  // per object (elementary: its own; compound: empty)
-  std::vector<std::vector<NodeId>> points; // per POI1 object
-};
-
-// Mesh nodes for the Cast3M node numbers used by elementary objects, in number order.
-std::map<std::int64_t, NodeId> buildNodes(const std::filesystem::path& file, const GibiFile& f, Mesh& mesh) {
-  std::map<std::int64_t, NodeId> ids;
-  for (std::size_t o = 0; o < f.objects.size(); ++o) {
-    for (const auto n : f.objects[o].nodes) {
-      if (n < 1 || n > static_cast<std::int64_t>(f.coordinateOf.size())) {
-        throwFileError("MESHFILE_3", file,
-                       "mesh object " + std::to_string(o + 1) + " refers to node " + std::to_string(n) +
-                           " but pile 32 has " + std::to_string(f.coordinateOf.size()) + " nodes",
-                       f.objects[o].line);
-      }
-      ids.emplace(n, 0);
-    }
-  }
+// Every point of pile 32 is a node named N<number>, as code_aster's PRE_GIBI writes them.
+void buildNodes(const std::filesystem::path& file, const GibiFile& f, Mesh& mesh) {
   const auto stride = static_cast<std::size_t>(f.dimension + 1);
   const auto entries = static_cast<std::int64_t>(f.coordinates.size() / stride);
-  mesh.reserveNodes(static_cast<std::int64_t>(ids.size()));
-  for (auto& [number, id] : ids) {
-    const auto entry = f.coordinateOf[static_cast<std::size_t>(number - 1)];
+  mesh.reserveNodes(static_cast<std::int64_t>(f.coordinateOf.size()));
+  for (std::size_t i = 0; i < f.coordinateOf.size(); ++i) {
+    const auto entry = f.coordinateOf[i];
     if (entry < 1 || entry > entries) {
       throwFileError("MESHFILE_3", file,
-                     "node " + std::to_string(number) + " has coordinate entry " + std::to_string(entry) +
+                     "node " + std::to_string(i + 1) + " has coordinate entry " + std::to_string(entry) +
                          " (pile 32) but pile 33 has " + std::to_string(entries),
-                     f.coordinateOfLine + static_cast<int>((number - 1) / 10));
+                     f.coordinateOfLine + static_cast<int>(i / 10));
     }
     Point3 x{0.0, 0.0, 0.0};
     for (std::size_t d = 0; d < static_cast<std::size_t>(f.dimension); ++d) {
       x[d] = f.coordinates[static_cast<std::size_t>(entry - 1) * stride + d];
     }
-    id = mesh.addNode(x, "N" + std::to_string(number));
+    mesh.addNode(x, "N" + std::to_string(i + 1));
   }
-  return ids;
 }
 
-Built buildCells(const GibiFile& f, const std::map<std::int64_t, NodeId>& ids, Mesh& mesh) {
-  Built b;
-  b.cells.resize(f.objects.size());
-  b.points.resize(f.objects.size());
+// The cells of every elementary object (empty for compound objects), in file order; an element
+// listed again (same type and nodes) is the cell already made.
+std::vector<std::vector<CellId>> buildCells(const std::filesystem::path& file, const GibiFile& f,
+                                            Mesh& mesh) {
+  std::vector<std::vector<CellId>> cells(f.objects.size());
   std::map<std::pair<CellType, std::vector<NodeId>>, CellId> known;
+  const auto nnodes = static_cast<std::int64_t>(f.coordinateOf.size());
   for (std::size_t o = 0; o < f.objects.size(); ++o) {
     const auto& obj = f.objects[o];
     if (obj.type == nullptr) {
@@ -422,11 +412,14 @@ Built buildCells(const GibiFile& f, const std::map<std::int64_t, NodeId>& ids, M
     for (std::size_t e = 0; e * nn < obj.nodes.size(); ++e) {
       std::vector<NodeId> nodes(nn);
       for (std::size_t j = 0; j < nn; ++j) {
-        nodes[j] = ids.at(obj.nodes[e * nn + static_cast<std::size_t>(perm[j])]);
-      }
-      if (obj.type->type == CellType::POI1) {
-        b.points[o].push_back(nodes[0]);
-        continue;
+        const auto n = obj.nodes[e * nn + static_cast<std::size_t>(perm[j])];
+        if (n < 1 || n > nnodes) {
+          throwFileError("MESHFILE_3", file,
+                         "mesh object " + std::to_string(o + 1) + " refers to node " + std::to_string(n) +
+                             " but pile 32 has " + std::to_string(nnodes) + " nodes",
+                         obj.line);
+        }
+        nodes[j] = static_cast<NodeId>(n - 1);
       }
       auto key = std::make_pair(obj.type->type, nodes);
       std::sort(key.second.begin(), key.second.end());
@@ -434,10 +427,10 @@ Built buildCells(const GibiFile& f, const std::map<std::int64_t, NodeId>& ids, M
       if (added) {
         it->second = mesh.addCell(obj.type->type, nodes);
       }
-      b.cells[o].push_back(it->second);
+      cells[o].push_back(it->second);
     }
   }
-  return b;
+  return cells;
 }
 
 // The elementary objects of object `o` (itself, or its parts recursively).
@@ -462,7 +455,10 @@ void collectParts(const std::filesystem::path& file, const GibiFile& f, std::int
   }
 }
 
-void buildGroups(const std::filesystem::path& file, const GibiFile& f, const Built& b, Mesh& mesh) {
+// Named mesh objects become GROUP_MA (the cells of their elementary parts), named points
+// GROUP_NO of one node, as code_aster's PRE_GIBI does.
+void buildGroups(const std::filesystem::path& file, const GibiFile& f,
+                 const std::vector<std::vector<CellId>>& cells, Mesh& mesh) {
   for (const auto& [name, index] : f.names) {
     if (index < 1 || index > static_cast<std::int64_t>(f.objects.size())) {
       throwFileError("MESHFILE_3", file,
@@ -472,17 +468,20 @@ void buildGroups(const std::filesystem::path& file, const GibiFile& f, const Bui
     }
     std::vector<std::size_t> parts;
     collectParts(file, f, index - 1, 0, parts);
-    std::set<CellId> cells;
-    std::set<NodeId> points;
+    std::set<CellId> members;
     for (const auto p : parts) {
-      cells.insert(b.cells[p].begin(), b.cells[p].end());
-      points.insert(b.points[p].begin(), b.points[p].end());
+      members.insert(cells[p].begin(), cells[p].end());
     }
-    if (!cells.empty()) {
-      mesh.setCellGroup(name, std::vector<CellId>(cells.begin(), cells.end()));
-    } else if (!points.empty()) {
-      mesh.setNodeGroup(name, std::vector<NodeId>(points.begin(), points.end()));
+    mesh.setCellGroup(name, std::vector<CellId>(members.begin(), members.end()));
+  }
+  for (const auto& [name, number] : f.pointNames) {
+    if (number < 1 || number > static_cast<std::int64_t>(f.coordinateOf.size())) {
+      throwFileError("MESHFILE_3", file,
+                     "point name '" + name + "' refers to node " + std::to_string(number) +
+                         " but pile 32 has " + std::to_string(f.coordinateOf.size()) + " nodes",
+                     f.pointNamesLine);
     }
+    mesh.setNodeGroup(name, std::vector<NodeId>{static_cast<NodeId>(number - 1)});
   }
 }
 
@@ -492,12 +491,12 @@ Mesh readGibiMesh(const std::filesystem::path& file) {
   const GibiFile f = parseGibi(file);
   Mesh mesh;
   mesh.setDimension(f.dimension);
-  const auto ids = buildNodes(file, f, mesh);
-  const Built built = buildCells(f, ids, mesh);
+  buildNodes(file, f, mesh);
+  const auto cells = buildCells(file, f, mesh);
   if (mesh.cellCount() == 0) {
-    throwFileError("MESHFILE_3", file, "the mesh objects hold no cell (only points)");
+    throwFileError("MESHFILE_3", file, "the mesh objects hold no element");
   }
-  buildGroups(file, f, built, mesh);
+  buildGroups(file, f, cells, mesh);
   return mesh;
 }
 

@@ -6,8 +6,8 @@
 //
 // Groups: Gmsh physical groups become cell groups named by their physical name ("GM<tag>"
 // without a name) and node groups of the same name (the nodes of those cells); MED families
-// become cell and node groups; .mail GROUP_MA/GROUP_NO blocks become groups; named GIBI objects
-// become GROUP_NO (objects of points) or GROUP_MA (see GibiReader.cpp).
+// become cell and node groups; .mail GROUP_MA/GROUP_NO blocks become groups; named GIBI mesh objects
+// become GROUP_MA, named GIBI points GROUP_NO of one node (see GibiReader.cpp).
 
 #include "solver/mesh/Mesh.hpp"
 

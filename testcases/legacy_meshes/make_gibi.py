@@ -1,7 +1,10 @@
 #!/usr/bin/python3
 """Writes the GIBI (Cast3M SAUVER FORMATTE) test meshes of this folder, from the meshes of
-make_med23.py: gibi_plate_lin, gibi_plate_quad and gibi_block (their ASTER twins are the
-med23_*.mail files) and gibi_zoo (every Cast3M element type stella reads, twin gibi_zoo.mail).
+make_med23.py: gibi_plate_lin, gibi_plate_quad, gibi_block and gibi_zoo (every Cast3M element
+type stella reads), each with its ASTER twin gibi_*.mail: the mesh as code_aster's PRE_GIBI
+makes it (every point a node N<number>, every element a cell, named mesh objects GROUP_MA,
+named points GROUP_NO of one node). Node groups of several nodes of make_med23.py's meshes
+become named objects of POI1 elements (GROUP_MA), as a Cast3M user would save them.
 
 Format (Cast3M's ASCII save file, as LIRE_MAILLAGE(FORMAT='GIBI') reads it):
   ' ENREGISTREMENT DE TYPE   4' + ' NIVEAU  15 NIVEAU ERREUR   0 DIMENSION   d' + density line
@@ -21,8 +24,8 @@ numbered as in MED, CUB8/CU20 as in code_aster (facts of Cast3M's format as used
 MED/Salome GIBI converter). GIBI_PERM gives, per type, aster node j = Cast3M node GIBI_PERM[j].
 
 Each run of consecutive cells of one type and one family becomes an unnamed or named mesh
-object; a group spread over several objects becomes a named compound object; each node group a
-named object of POI1 elements. Pile 32 maps node k to coordinate entry N + 1 - k (reversed), so
+object; a group spread over several objects becomes a named compound object; a node group of
+one node a named point of pile 32. Pile 32 maps node k to coordinate entry N + 1 - k (reversed), so
 that the indirection is exercised.
 
 Usage: make_gibi.py [output directory]   (default: this script's directory)
@@ -78,9 +81,44 @@ def reals(values):
     return ["".join("%22.14E" % v for v in values[i:i + 3]) for i in range(0, len(values), 3)]
 
 
+def gibi_variant(mesh):
+    """The mesh as code_aster reads it from GIBI: node groups of one node stay (named points);
+    larger node groups become groups of POI1 cells (named mesh objects of points)."""
+    m = meshes.Mesh(mesh.name, mesh.dim)
+    node_groups = [mesh.families.get(f, ("", []))[1] if f else [] for f in mesh.node_fam]
+    size = {}
+    for groups in node_groups:
+        for g in groups:
+            size[g] = size.get(g, 0) + 1
+    point_families, cell_families = {}, {}
+    next_cell_family = min([0] + list(mesh.families)) - 1
+    poi1 = []
+    for x, groups in zip(mesh.nodes, node_groups):
+        single = tuple(g for g in groups if size[g] == 1)
+        multi = tuple(g for g in groups if size[g] > 1)
+        if single and single not in point_families:
+            point_families[single] = len(point_families) + 1
+            m.family(point_families[single], list(single))
+        node = m.node(x, point_families.get(single, 0))
+        if multi:
+            if multi not in cell_families:
+                cell_families[multi] = next_cell_family
+                m.family(next_cell_family, list(multi))
+                next_cell_family -= 1
+            poi1.append((node, cell_families[multi]))
+    for number, family in mesh.families.items():
+        if number < 0:
+            m.families[number] = family
+    for typ, nodes, family in mesh.cells:
+        m.cell(typ, nodes, family)
+    for node, family in poi1:
+        m.cell("PO1", [node], family)
+    return m
+
+
 def objects_of(mesh):
-    """(objects, named): objects as (type number, parts, nodes per element, elements);
-    named maps a group name to an object index (1-based)."""
+    """(objects, named, points): objects as (type number, parts, nodes per element, elements);
+    named maps a cell group to an object index (1-based), points a node group to its node."""
     objects, runs = [], []
     for typ, nodes, family in mesh.ordered_cells():
         if runs and runs[-1][0] == typ and runs[-1][1] == family:
@@ -99,14 +137,12 @@ def objects_of(mesh):
         else:
             objects.append((0, parts, 0, []))
             named[g] = len(objects)
-    node_groups = {}
+    points = {}
     for i, family in enumerate(mesh.node_fam):
         for g in (mesh.families.get(family, ("", []))[1] if family else []):
-            node_groups.setdefault(g, []).append(i + 1)
-    for g, nodes in sorted(node_groups.items()):
-        objects.append((1, [], 1, [[n] for n in nodes]))
-        named[g] = len(objects)
-    return objects, named
+            assert g not in points, "a GIBI node group is one named point"
+            points[g] = i + 1
+    return objects, named, points
 
 
 def write_gibi(path, mesh):
@@ -118,7 +154,7 @@ def write_gibi(path, mesh):
            " NOMBRE INFO CASTEM2000   8",
            " IFOUR  -1 NIFOUR   0 IFOMOD  -1 IECHO   1 IIMPI   0 IOSPI   0 ISOTYP   1",
            " NSDPGE     0"]
-    objects, named = objects_of(mesh)
+    objects, named, points = objects_of(mesh)
     out.append(" ENREGISTREMENT DE TYPE   2")
     out.append(" PILE NUMERO   1NBRE OBJETS NOMMES%8dNBRE OBJETS%8d" % (len(named), len(objects)))
     out += names(named.keys())
@@ -130,7 +166,9 @@ def write_gibi(path, mesh):
         out += ints(n for cell in cells for n in cell)
     count = len(mesh.nodes)
     out.append(" ENREGISTREMENT DE TYPE   2")
-    out.append(" PILE NUMERO  32NBRE OBJETS NOMMES%8dNBRE OBJETS%8d" % (0, count))
+    out.append(" PILE NUMERO  32NBRE OBJETS NOMMES%8dNBRE OBJETS%8d" % (len(points), count))
+    out += names(points.keys())
+    out += ints(points.values())
     out += ints([count])
     out += ints(count - k for k in range(count))
     out.append(" ENREGISTREMENT DE TYPE   2")
@@ -149,11 +187,10 @@ def write_gibi(path, mesh):
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))
     for stem, mesh in (("gibi_plate_lin", meshes.plate_2d(False)), ("gibi_plate_quad", meshes.plate_2d(True)),
-                       ("gibi_block", meshes.block_3d())):
-        write_gibi(os.path.join(out, stem + ".mgib"), mesh)
-    zoo = meshes.zoo(tuple(t for t in meshes.TYPES if t != "PO1"))
-    write_gibi(os.path.join(out, "gibi_zoo.mgib"), zoo)
-    meshes.write_mail(os.path.join(out, "gibi_zoo.mail"), zoo)
+                       ("gibi_block", meshes.block_3d()), ("gibi_zoo", meshes.zoo())):
+        variant = gibi_variant(mesh)
+        write_gibi(os.path.join(out, stem + ".mgib"), variant)
+        meshes.write_mail(os.path.join(out, stem + ".mail"), variant)
 
 
 if __name__ == "__main__":
