@@ -120,7 +120,7 @@ def objects_of(mesh):
     """(objects, named, points): objects as (type number, parts, nodes per element, elements);
     named maps a cell group to an object index (1-based), points a node group to its node."""
     objects, runs = [], []
-    for typ, nodes, family in mesh.ordered_cells():
+    for typ, nodes, family, _ in mesh.ordered_cells():
         if runs and runs[-1][0] == typ and runs[-1][1] == family:
             runs[-1][2].append(gibi_nodes(typ, nodes))
         else:

@@ -10,10 +10,12 @@ not read through its family calls. The layout (MED 2.3 documentation, med_outils
     NOE/COO                   coordinates, not interlaced (all x, then all y, ...);
                               attributes NBR, REP (0: cartesian), NOM, UNI (16 characters/axis)
     NOE/FAM                   family number of each node (0: none)
+    NOE/NOM                   optional node names, 16-character records
     MAI/<TYP>                 one group per cell type (SE2, TR3, QU8, HE8, ...):
       NOD                     connectivity, not interlaced (node 1 of every cell, node 2 ...),
                               1-based node numbers in MED order; attribute NBR (cell count)
       FAM                     family number of each cell (negative; 0: none)
+      NOM                     optional cell names, 16-character records
     FAS/FAMILLE_ZERO          attribute NUM = 0
     FAS/NOEUD/<family>        attribute NUM > 0 (node families), NUM < 0 under ELEME (cell
     FAS/ELEME/<family>        families); GRO with attribute NBR and dataset NOM: the group
@@ -76,24 +78,29 @@ class Mesh:
     def __init__(self, name, dim):
         self.name, self.dim = name, dim
         self.nodes, self.node_fam, self.cells = [], [], []
+        self.node_names, self.cell_names = [], []  # None: the default name N<i> / M<i>
         self.families = {}  # number -> (family name, [group names])
 
-    def node(self, x, family=0):
+    def node(self, x, family=0, name=None):
         self.nodes.append(tuple(float(v) for v in x))
         self.node_fam.append(family)
+        self.node_names.append(name)
         return len(self.nodes)
 
-    def cell(self, typ, nodes, family=0):
+    def cell(self, typ, nodes, family=0, name=None):
         assert len(nodes) == TYPES[typ][2], typ
         self.cells.append((typ, list(nodes), family))
+        self.cell_names.append(name)
 
     def family(self, number, groups):
         kind = "NOEUD" if number > 0 else "ELEME"
         self.families[number] = ("FAM_%s_%d" % (kind[0], abs(number)), groups)
 
     def ordered_cells(self):
-        """Cells as a MED reader numbers them: by MED geometry number, file order within."""
-        return sorted(self.cells, key=lambda c: TYPES[c[0]][0])
+        """Cells as a MED reader numbers them: by MED geometry number, file order within;
+        (type, nodes, family, name or None)."""
+        order = sorted(range(len(self.cells)), key=lambda i: TYPES[self.cells[i][0]][0])
+        return [self.cells[i] + (self.cell_names[i],) for i in order]
 
 
 def put_int_attr(obj, key, value):
@@ -120,6 +127,14 @@ def put_char_dataset(group, key, text):
     dset.write(h5py.h5s.ALL, h5py.h5s.ALL, np.frombuffer(text, dtype=np.uint8), mtype=tid)
 
 
+def put_names(group, names):
+    """NOM: 16-character names (MED 2.3), when the mesh names these entities."""
+    if all(n is None for n in names):
+        return
+    put_char_dataset(group, "NOM", b"".join(n.encode().ljust(16) for n in names))
+    put_int_attr(group["NOM"], "NBR", len(names))
+
+
 def write_med23(path, mesh, release=5):
     with h5py.File(path, "w") as f:
         info = f.create_group("INFOS_GENERALES")
@@ -139,9 +154,10 @@ def write_med23(path, mesh, release=5):
         put_str_attr(coo, "UNI", " " * 16 * mesh.dim, 16 * mesh.dim)
         fam = noe.create_dataset("FAM", data=np.array(mesh.node_fam, dtype=np.int32))
         put_int_attr(fam, "NBR", len(mesh.nodes))
+        put_names(noe, mesh.node_names)
         mai = maa.create_group("MAI")
         for typ in TYPES:
-            cells = [c for c in mesh.cells if c[0] == typ]
+            cells = [c for c in mesh.ordered_cells() if c[0] == typ]
             if not cells:
                 continue
             g = mai.create_group(typ)
@@ -150,6 +166,7 @@ def write_med23(path, mesh, release=5):
             put_int_attr(nod, "NBR", len(cells))
             fam = g.create_dataset("FAM", data=np.array([c[2] for c in cells], dtype=np.int32))
             put_int_attr(fam, "NBR", len(cells))
+            put_names(g, [c[3] for c in cells])
         fas = maa.create_group("FAS")
         put_int_attr(fas.create_group("FAMILLE_ZERO"), "NUM", 0)
         for number, (fname, groups) in sorted(mesh.families.items()):
@@ -169,28 +186,31 @@ def write_med23(path, mesh, release=5):
 
 
 def write_mail(path, mesh):
+    def node_name(i):
+        return mesh.node_names[i] or "N%d" % (i + 1)
+
     out = ["TITRE", " MED 2.3 test mesh %s (make_med23.py)" % mesh.name, "FINSF", "%"]
     out.append("COOR_%dD" % mesh.dim)
     for i, x in enumerate(mesh.nodes):
-        out.append("N%d %s" % (i + 1, " ".join(repr(v) for v in x[: mesh.dim])))
+        out.append("%s %s" % (node_name(i), " ".join(repr(v) for v in x[: mesh.dim])))
     out += ["FINSF", "%"]
     cells = mesh.ordered_cells()
     cell_groups, node_groups = {}, {}
     previous = None
-    for i, (typ, nodes, family) in enumerate(cells):
+    for i, (typ, nodes, family, name) in enumerate(cells):
         if typ != previous:
             if previous is not None:
                 out += ["FINSF", "%"]
             out.append(TYPES[typ][1])
             previous = typ
         perm = PERM.get(typ, range(len(nodes)))
-        out.append("M%d %s" % (i + 1, " ".join("N%d" % nodes[p] for p in perm)))
+        out.append("%s %s" % (name or "M%d" % (i + 1), " ".join(node_name(nodes[p] - 1) for p in perm)))
         for g in mesh.families.get(family, ("", []))[1] if family else []:
-            cell_groups.setdefault(g, []).append("M%d" % (i + 1))
+            cell_groups.setdefault(g, []).append(name or "M%d" % (i + 1))
     out += ["FINSF", "%"]
     for i, family in enumerate(mesh.node_fam):
         for g in mesh.families.get(family, ("", []))[1] if family else []:
-            node_groups.setdefault(g, []).append("N%d" % (i + 1))
+            node_groups.setdefault(g, []).append(node_name(i))
     for block, groups in (("GROUP_MA", cell_groups), ("GROUP_NO", node_groups)):
         for g in sorted(groups):
             out += [block, g] + ["  " + m for m in groups[g]] + ["FINSF", "%"]
@@ -255,7 +275,8 @@ def plate_2d(quadratic):
 def block_3d():
     """Two unit HEXA8 stacked along z on [0,1]x[0,1]x[0,2], QUAD4 faces on z = 0 (BAS) and z = 2
     (HAUT), both faces oriented outward; cell groups VOLU, BAS, HAUT, SURF_EXT (a family with
-    BAS and SURF_EXT), node groups N_BAS, N_O (origin), N_X (x-axis node, y = z = 0), N_HAUT."""
+    BAS and SURF_EXT), node groups N_BAS, N_O (origin), N_X (x-axis node, y = z = 0), N_HAUT.
+    Nodes and cells are named (NO1..., HEXA1, HEXA2, FACE_BAS, FACE_HAU: NOM datasets in MED)."""
     m = Mesh("BLOC3D", 3)
     ids = {}
     for k in range(3):
@@ -265,7 +286,7 @@ def block_3d():
                     fam = {(0, 0): 2, (1, 0): 3}.get((i, j), 1)
                 else:
                     fam = 4 if k == 2 else 0
-                ids[i, j, k] = m.node((i, j, k), fam)
+                ids[i, j, k] = m.node((i, j, k), fam, "NO%d" % (len(m.nodes) + 1))
     m.family(1, ["N_BAS"])
     m.family(2, ["N_BAS", "N_O"])
     m.family(3, ["N_BAS", "N_X"])
@@ -281,9 +302,9 @@ def block_3d():
         med = [0] * 8
         for j, pj in enumerate(PERM["HE8"]):
             med[pj] = aster[j]
-        m.cell("HE8", med, -1)
-    m.cell("QU4", [ids[0, 0, 0], ids[0, 1, 0], ids[1, 1, 0], ids[1, 0, 0]], -2)
-    m.cell("QU4", [ids[0, 0, 2], ids[1, 0, 2], ids[1, 1, 2], ids[0, 1, 2]], -3)
+        m.cell("HE8", med, -1, "HEXA%d" % (k + 1))
+    m.cell("QU4", [ids[0, 0, 0], ids[0, 1, 0], ids[1, 1, 0], ids[1, 0, 0]], -2, "FACE_BAS")
+    m.cell("QU4", [ids[0, 0, 2], ids[1, 0, 2], ids[1, 1, 2], ids[0, 1, 2]], -3, "FACE_HAU")
     return m
 
 

@@ -60,6 +60,15 @@ TEST(LegacyMed, FamiliesWithSeveralGroupsGiveEveryGroup) {
   EXPECT_EQ(size(m.nodeGroup("N_HAUT")), 3u);
 }
 
+// Names stored in the file (NOM datasets of the 2.3 layout) are kept.
+TEST(LegacyMed, NodeAndCellNamesAreRead) {
+  const Mesh m = readMedMesh(legacy / "med23_block.med");
+  EXPECT_EQ(m.nodeName(0), "NO1");
+  EXPECT_EQ(m.nodeName(11), "NO12");
+  EXPECT_EQ(m.cellName(0), "FACE_BAS");
+  EXPECT_EQ(m.cellName(3), "HEXA2");
+}
+
 // The committed files are what the generator writes (run when python3-h5py is installed).
 TEST(LegacyMed, GeneratorRewritesTheCommittedFiles) {
   if (std::system("/usr/bin/python3 -c 'import h5py' > /dev/null 2>&1") != 0) {
