@@ -1,7 +1,8 @@
 // MED mesh reader (libmedC): nodes, cells of every supported geometry (MED_CELL entities, node
 // orderings mapped to code_aster's), node and cell names when present, families mapped to
-// groups of nodes and cells. Cells are numbered in increasing MED geometry order, as code_aster
-// does. Every library failure becomes MESHFILE_4 naming the file and the step.
+// groups of nodes and cells (MED 3/4 layout, and the MED 2.3 layout of older Salome versions
+// through the library's 2.3 family call). Cells are numbered in increasing MED geometry order,
+// as code_aster does. Every library failure becomes MESHFILE_4 naming the file and the step.
 
 #include "solver/io/MedCommon.hpp"
 #include "solver/io/MeshFileError.hpp"
@@ -91,8 +92,38 @@ std::vector<med_int> readFamilies(const MedFile& f, const std::string& mesh, med
   return fam;
 }
 
+// Files of the MED 2.x layout (older Salome): families live under the mesh and may carry
+// attributes; the library reads them with MEDfamily23Info only (MEDfamilyInfo has no 2.x
+// implementation). The attributes (identifier, value, description) mean nothing to code_aster.
+bool hasLayout23(const MedFile& f) {
+  med_int major = 0;
+  med_int minor = 0;
+  med_int release = 0;
+  f.check(MEDfileNumVersionRd(f.id(), &major, &minor, &release), "MEDfileNumVersionRd", "file version");
+  return major < 3;
+}
+
+void readFamily23(const MedFile& f, const std::string& mesh, int family, med_int& number,
+                  std::vector<char>& names) {
+  const std::string context = "family " + std::to_string(family) + " of mesh " + mesh;
+  const med_int nattr = MEDnFamily23Attribute(f.id(), mesh.c_str(), family);
+  f.check(nattr, "MEDnFamily23Attribute", context);
+  if (nattr > 100000) {
+    throwFileError("MESHFILE_3", f.path(), context + " claims " + std::to_string(nattr) + " attributes");
+  }
+  const auto na = static_cast<std::size_t>(nattr);
+  std::vector<med_int> ids(na + 1);
+  std::vector<med_int> values(na + 1);
+  std::vector<char> descriptions(na * MED_COMMENT_SIZE + 1, '\0');
+  char famName[MED_NAME_SIZE + 1] = {};
+  f.check(MEDfamily23Info(f.id(), mesh.c_str(), family, famName, ids.data(), values.data(),
+                          descriptions.data(), &number, names.data()),
+          "MEDfamily23Info", context);
+}
+
 std::map<med_int, std::vector<std::string>> readFamilyGroups(const MedFile& f, const std::string& mesh) {
   std::map<med_int, std::vector<std::string>> groups;
+  const bool layout23 = hasLayout23(f);
   const med_int nfam = MEDnFamily(f.id(), mesh.c_str());
   f.check(nfam, "MEDnFamily", "mesh " + mesh);
   for (med_int i = 1; i <= nfam; ++i) {
@@ -102,11 +133,15 @@ std::map<med_int, std::vector<std::string>> readFamilyGroups(const MedFile& f, c
       throwFileError("MESHFILE_3", f.path(),
                      "family " + std::to_string(i) + " claims " + std::to_string(ngroup) + " groups");
     }
-    char famName[MED_NAME_SIZE + 1] = {};
     med_int number = 0;
     std::vector<char> names(static_cast<std::size_t>(ngroup) * MED_LNAME_SIZE + 1, '\0');
-    f.check(MEDfamilyInfo(f.id(), mesh.c_str(), static_cast<int>(i), famName, &number, names.data()),
-            "MEDfamilyInfo", "family " + std::to_string(i) + " of mesh " + mesh);
+    if (layout23) {
+      readFamily23(f, mesh, static_cast<int>(i), number, names);
+    } else {
+      char famName[MED_NAME_SIZE + 1] = {};
+      f.check(MEDfamilyInfo(f.id(), mesh.c_str(), static_cast<int>(i), famName, &number, names.data()),
+              "MEDfamilyInfo", "family " + std::to_string(i) + " of mesh " + mesh);
+    }
     auto& list = groups[number];
     for (med_int g = 0; g < ngroup; ++g) {
       const auto n = medName(names.data() + static_cast<std::size_t>(g) * MED_LNAME_SIZE, MED_LNAME_SIZE);

@@ -163,6 +163,9 @@ std::optional<MeshFormat> meshFormatFromExtension(const std::filesystem::path& f
   if (ext == ".msh") {
     return MeshFormat::Gmsh;
   }
+  if (ext == ".mgib") {
+    return MeshFormat::Gibi;
+  }
   return std::nullopt;
 }
 
@@ -174,6 +177,8 @@ Mesh readMesh(const std::filesystem::path& file, MeshFormat format, const std::s
     return readAsterMesh(file);
   case MeshFormat::Gmsh:
     return readGmshMesh(file);
+  case MeshFormat::Gibi:
+    return readGibiMesh(file);
   }
   return {};
 }
@@ -189,6 +194,9 @@ void writeMesh(const std::filesystem::path& file, const Mesh& mesh, MeshFormat f
   case MeshFormat::Gmsh:
     writeGmshMesh(file, mesh);
     return;
+  case MeshFormat::Gibi:
+    throwFileError("MESHFILE_5", file,
+                   "writing GIBI files is not implemented yet (write MED, ASTER or GMSH)");
   }
 }
 

@@ -1,5 +1,6 @@
 // LIRE_MAILLAGE: reads the mesh of a logical unit (default 20) in FORMAT MED (NOM_MED selects
-// one mesh of the file), ASTER or GMSH, runs the VERI_MAIL checks (alarms) and prints a summary.
+// one mesh of the file), ASTER, GMSH or GIBI (Cast3M), runs the VERI_MAIL checks (alarms) and prints a
+// summary.
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/database/MeshConcept.hpp"
@@ -24,9 +25,12 @@ MeshFormat formatOf(const KeywordTree& kw) {
   if (f == "GMSH") {
     return MeshFormat::Gmsh;
   }
+  if (f == "GIBI") {
+    return MeshFormat::Gibi;
+  }
   throw UserError(Diagnostic::fatal("LIRE_MAILLAGE_1", "FORMAT='" + f + "' is not implemented yet",
                                     kw.locationOf("FORMAT"))
-                      .withNote("convert the mesh to MED, ASTER or GMSH"));
+                      .withNote("convert the mesh to MED, ASTER, GMSH or GIBI"));
 }
 
 Value runLireMaillage(OperatorCall& call) {
