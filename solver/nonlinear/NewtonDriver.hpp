@@ -10,6 +10,8 @@
 // With RECH_LINEAIRE each correction is scaled by the secant line search (CORDE). Step cutting on
 // failure is left to the caller (TimeStepper).
 
+#include "solver/nonlinear/ConvergenceVerif.hpp"
+#include "solver/nonlinear/IterationColumns.hpp"
 #include "solver/nonlinear/MechanicalSystem.hpp"
 #include "solver/nonlinear/PointState.hpp"
 #include "solver/nonlinear/StepConstraint.hpp"
@@ -38,10 +40,12 @@ struct NewtonSettings {
   int reacIter = 1;          // REAC_ITER (0: only at the prediction)
   int reacIncr = 1;          // REAC_INCR (0: the prediction matrix of the first step only)
   Prediction prediction = Prediction::Tangent;
-  double resiGlobRela = 1.0e-6;  // RESI_GLOB_RELA (<= 0: not used)
-  double resiGlobMaxi = -1.0;    // RESI_GLOB_MAXI (<= 0: not used)
-  int iterGlobMaxi = 10;         // ITER_GLOB_MAXI (ITER_GLOB_ELAS with MATRICE='ELASTIQUE')
-  LineSearchSettings lineSearch; // RECH_LINEAIRE
+  double resiGlobRela = 1.0e-6; // RESI_GLOB_RELA (<= 0: not used)
+  double resiGlobMaxi = -1.0;   // RESI_GLOB_MAXI (<= 0: not used)
+  int iterGlobMaxi = 10;        // ITER_GLOB_MAXI (ITER_GLOB_ELAS with MATRICE='ELASTIQUE')
+  CriteriaCombination verif = CriteriaCombination::All; // CONVERGENCE/VERIF
+  bool symmetrizeTangent = false; // NEWTON/MATR_RIGI_SYME='OUI': (K + K^T) / 2, factorised symmetric
+  LineSearchSettings lineSearch;  // RECH_LINEAIRE
   // PREDICTION='DEPL_CALCULE': the displacement (physical size) of NEWTON/EVOL_NOLI at a time.
   std::function<Eigen::VectorXd(double)> computedDisplacement;
 };
@@ -79,6 +83,8 @@ public:
   // A condition solved with the mechanical equations (contact), or none (the default: nothing
   // of it is called). Not owned.
   void setConstraint(StepConstraint* constraint) { constraint_ = constraint; }
+  // Extra columns of the convergence table (SUIVI_DDL), or none. Not owned.
+  void setIterationColumns(const IterationColumns* columns) { columns_ = columns; }
 
   // Converged steps so far (REAC_INCR counts them).
   int convergedSteps() const { return convergedSteps_; }
@@ -113,6 +119,7 @@ private:
   NewtonSettings settings_;
   std::ostream& log_;
   StepConstraint* constraint_ = nullptr;
+  const IterationColumns* columns_ = nullptr;
   bool elasticFactorized_ = false;
   double forceScale_ = 0.0; // RESI_GLOB_RELA reference of the last step converged under load
   int convergedSteps_ = 0;
