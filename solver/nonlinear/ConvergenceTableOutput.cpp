@@ -23,6 +23,10 @@ ConvergenceTableOutput::ConvergenceTableOutput(const KeywordTree& kw, Session& s
     if (unit == 6) {
       return; // the message file already has every table
     }
+    if (unit == 8) {
+      buffer_.unit = &session.result();
+      return;
+    }
     unitFile_ = std::make_unique<std::ofstream>(session.unitPath(unit, occ.locationOf("UNITE"), false),
                                                 std::ios::app);
     if (!*unitFile_) {

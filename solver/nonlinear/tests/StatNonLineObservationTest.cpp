@@ -153,6 +153,50 @@ TEST(StatNonLineObservation, ContinuationAppendsWithTheNextNumeReuse) {
   }
 }
 
+// CONT_NOEU of the friction block of testcases/friction_block: every slave node sticks (CONT = 1)
+// at t = 1.5 and slides (CONT = 2) at t = 3 (the closed form of that case's README).
+TEST(StatNonLineObservation, ContactStatusOfTheFrictionBlock) {
+  const std::string comm = R"(
+DEBUT()
+MA = LIRE_MAILLAGE(FORMAT='GMSH', UNITE=20)
+MA = MODI_MAILLAGE(reuse=MA, MAILLAGE=MA, ORIE_PEAU=_F(GROUP_MA_PEAU=('BLOC_BAS', 'SOL_HAUT')))
+MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='D_PLAN'))
+RIGIDE = DEFI_MATERIAU(ELAS=_F(E=2.1e11, NU=0.3))
+CM = AFFE_MATERIAU(MAILLAGE=MA, AFFE=_F(TOUT='OUI', MATER=RIGIDE))
+SOL = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='SOL', DX=0.0, DY=0.0))
+PRESSE = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='BLOC_HAUT', DY=-0.01))
+CISAILLE = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='BLOC_HAUT', DX=3.0e-3))
+F_N = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0, 3.0, 1.0))
+F_T = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 0.0, 3.0, 2.0))
+L_INST = DEFI_LIST_REEL(VALE=(0.0, 1.0, 1.5, 2.0, 3.0))
+CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='DISCRETE', FROTTEMENT='COULOMB',
+                    ZONE=_F(GROUP_MA_MAIT='SOL_HAUT', GROUP_MA_ESCL='BLOC_BAS', ALGO_CONT='PENALISATION',
+                            E_N=1.0e4, ALGO_FROT='PENALISATION', E_T=1.0e4, COULOMB=0.2))
+R = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, CONTACT=CONT,
+                  EXCIT=(_F(CHARGE=SOL), _F(CHARGE=PRESSE, FONC_MULT=F_N), _F(CHARGE=CISAILLE, FONC_MULT=F_T)),
+                  INCREMENT=_F(LIST_INST=L_INST), CONVERGENCE=_F(ITER_GLOB_MAXI=30),
+                  OBSERVATION=(_F(NOM_CHAM='CONT_NOEU', NOM_CMP='CONT', GROUP_MA='BLOC_BAS', EVAL_CHAM='MIN',
+                                  INST=(1.5, 3.0), TITRE='MIN'),
+                               _F(NOM_CHAM='CONT_NOEU', NOM_CMP='CONT', GROUP_MA='BLOC_BAS', EVAL_CHAM='MAX',
+                                  INST=(1.5, 3.0), TITRE='MAX')))
+T = RECU_TABLE(CO=R, NOM_TABLE='OBSERVATION')
+FIN()
+)";
+  auto run = runStudy("obs_contact", comm, "testcases/friction_block/friction_block.msh");
+  ASSERT_EQ(run->failure(), FailureKind::None) << run->mess();
+  auto t = table(*run, "T");
+  ASSERT_TRUE(t);
+  for (const char* kind : {"MIN", "MAX"}) {
+    const auto rows = rowsWith(*t, "NOM_OBSERVATION", kind);
+    // the initial state (OBSE_ETAT_INIT='OUI': no contact yet, CONT = 0), t = 1.5, t = 3
+    ASSERT_EQ(rows.size(), 3u) << kind;
+    EXPECT_DOUBLE_EQ(real(*t, "INST", rows[1]), 1.5);
+    EXPECT_DOUBLE_EQ(real(*t, "VALE", rows[0]), 0.0) << kind;
+    EXPECT_DOUBLE_EQ(real(*t, "VALE", rows[1]), 1.0) << kind;
+    EXPECT_DOUBLE_EQ(real(*t, "VALE", rows[2]), 2.0) << kind;
+  }
+}
+
 TEST(StatNonLineObservation, RefusesWhatIsNotImplementedByName) {
   auto vari =
       runStudy("obs_vari",
