@@ -4,7 +4,9 @@
 // 'EXTRAPOLE': the last step's increment scaled by the ratio of the step lengths; 'DEPL_CALCULE':
 // the displacement of a given result at the new time), then corrections until the global
 // residual criteria hold (RESI_GLOB_RELA relative to the external forces and reactions,
-// RESI_GLOB_MAXI absolute), printing code_aster's convergence table in the message file.
+// RESI_GLOB_MAXI absolute; combined as CONVERGENCE/VERIF says), printing code_aster's convergence
+// table (with the SUIVI_DDL columns of setIterationColumns) to the stream it is given.
+// MATR_RIGI_SYME='OUI' factorises the symmetric part of an unsymmetric tangent.
 // The tangent is reassembled every REAC_ITER iterations and, at the prediction, every REAC_INCR
 // steps (MATRICE='TANGENTE'), or never (MATRICE='ELASTIQUE': the elastic matrix factorised once).
 // With RECH_LINEAIRE each correction is scaled by the secant line search (CORDE). Step cutting on

@@ -5,6 +5,8 @@
 // Steps that fail are cut as the DEFI_LIST_INST says (TimeStepper); ARCHIVAGE selects the
 // stored steps; ETAT_INIT / reuse= start from a stored step. A failure after every allowed cut
 // stops the run with <S>_NO_CONVERGENCE, keeping every stored step and the last converged one.
+// OBSERVATION and MESURE fill the result's tables 'OBSERVATION' and 'STAT' (RECU_TABLE);
+// SUIVI_DDL adds columns to the convergence tables, whose output AFFICHAGE directs.
 // What the catalogue has and stella does not is refused by name (StatNonLineKeywords).
 
 #include "interpreter/Diagnostics.hpp"
