@@ -34,6 +34,9 @@ public:
   std::shared_ptr<ConceptData> material; // the cham_mater concept's data
 
   std::vector<ResultStep> steps;
+  // Tables a command attached to the result, by NOM_TABLE (STAT_NON_LINE: 'OBSERVATION',
+  // 'STAT'), read back with RECU_TABLE. Table concepts (solver/post/Table.hpp).
+  std::map<std::string, std::shared_ptr<ConceptData>> tables;
 
   // Adds a step after the last one (number = last + 1, or `first` for the first).
   ResultStep& addStep(double time, int first = 0);

@@ -5,6 +5,7 @@
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/nonlinear/PhaseTimes.hpp"
+#include "solver/nonlinear/SymmetricTangent.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -82,8 +83,11 @@ void NewtonDriver::factorizeMatrix(StiffnessMatrix& k, const Eigen::VectorXd& u)
     }
     matrix->add(triplets);
   }
+  if (settings_.symmetrizeTangent && matrix->storage() == linalg::Storage::Full) {
+    matrix = &symmetricPart(*matrix, system_.stiffness(true));
+  }
   try {
-    system_.solver().factorize(*matrix, symmetric());
+    system_.solver().factorize(*matrix, symmetric() || settings_.symmetrizeTangent);
   } catch (const UserError& e) {
     const std::string note = constraint_ != nullptr ? constraint_->singularNote() : std::string();
     if (note.empty() || e.first().id != "SOLVE_1") {
@@ -256,11 +260,14 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
   }
   // With RECH_LINEAIRE a column gives the length rho of the line search that led to the row.
   const bool rhoColumn = settings_.lineSearch.enabled;
-  const std::string rule = std::string(78, '-') + (rhoColumn ? std::string(11, '-') : std::string());
+  const std::string extraHeader =
+      columns_ != nullptr ? columns_->header(start.displacement, start.points) : "";
+  const std::string rule = std::string(78, '-') + (rhoColumn ? std::string(11, '-') : std::string()) +
+                           std::string(extraHeader.size(), '-');
   log_ << fmt::format("   INST {:<12g}\n", time);
   log_ << "   " << rule << "\n";
   log_ << "   | ITER | RESI_GLOB_RELA | RESI_GLOB_MAXI | WHERE (MAXI)            | MATRIX    |"
-       << (rhoColumn ? " RHO      |" : "") << "\n";
+       << (rhoColumn ? " RHO      |" : "") << extraHeader << "\n";
   log_ << "   " << rule << "\n";
   double rho = 1.0;
   std::string matrixNote;
@@ -343,11 +350,14 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
     const std::string at =
         n > 0 ? system_.dofs().describe(static_cast<int>(where), *system_.model().mesh) : "-";
     const bool ok =
-        test.ok && (settings_.resiGlobMaxi <= 0.0 || maxi <= settings_.resiGlobMaxi) && std::isfinite(maxi);
-    log_ << fmt::format("   | {:4d} | {:14.6e} | {:14.6e} | {:<23} | {:<9} |{}{}\n", iter, rela, maxi,
-                        at.substr(0, 23), matrixNote,
-                        rhoColumn ? fmt::format(" {:<8.4g} |", rho) : std::string(),
-                        constraint_ != nullptr ? " " + constraint_->iterationNote() : std::string());
+        std::isfinite(maxi) && criteriaHold({{settings_.resiGlobRela > 0.0, test.ok},
+                                             {settings_.resiGlobMaxi > 0.0, maxi <= settings_.resiGlobMaxi}},
+                                            settings_.verif);
+    log_ << fmt::format(
+        "   | {:4d} | {:14.6e} | {:14.6e} | {:<23} | {:<9} |{}{}{}\n", iter, rela, maxi, at.substr(0, 23),
+        matrixNote, rhoColumn ? fmt::format(" {:<8.4g} |", rho) : std::string(),
+        columns_ != nullptr ? columns_->row(start.displacement + du, end.points) : std::string(),
+        constraint_ != nullptr ? " " + constraint_->iterationNote() : std::string());
     out.iterations = iter;
     out.resiRela = rela;
     out.resiMaxi = maxi;

@@ -4,12 +4,16 @@
 // 'EXTRAPOLE': the last step's increment scaled by the ratio of the step lengths; 'DEPL_CALCULE':
 // the displacement of a given result at the new time), then corrections until the global
 // residual criteria hold (RESI_GLOB_RELA relative to the external forces and reactions,
-// RESI_GLOB_MAXI absolute), printing code_aster's convergence table in the message file.
+// RESI_GLOB_MAXI absolute; combined as CONVERGENCE/VERIF says), printing code_aster's convergence
+// table (with the SUIVI_DDL columns of setIterationColumns) to the stream it is given.
+// MATR_RIGI_SYME='OUI' factorises the symmetric part of an unsymmetric tangent.
 // The tangent is reassembled every REAC_ITER iterations and, at the prediction, every REAC_INCR
 // steps (MATRICE='TANGENTE'), or never (MATRICE='ELASTIQUE': the elastic matrix factorised once).
 // With RECH_LINEAIRE each correction is scaled by the secant line search (CORDE). Step cutting on
 // failure is left to the caller (TimeStepper).
 
+#include "solver/nonlinear/ConvergenceVerif.hpp"
+#include "solver/nonlinear/IterationColumns.hpp"
 #include "solver/nonlinear/MechanicalSystem.hpp"
 #include "solver/nonlinear/PointState.hpp"
 #include "solver/nonlinear/StepConstraint.hpp"
@@ -38,10 +42,12 @@ struct NewtonSettings {
   int reacIter = 1;          // REAC_ITER (0: only at the prediction)
   int reacIncr = 1;          // REAC_INCR (0: the prediction matrix of the first step only)
   Prediction prediction = Prediction::Tangent;
-  double resiGlobRela = 1.0e-6;  // RESI_GLOB_RELA (<= 0: not used)
-  double resiGlobMaxi = -1.0;    // RESI_GLOB_MAXI (<= 0: not used)
-  int iterGlobMaxi = 10;         // ITER_GLOB_MAXI (ITER_GLOB_ELAS with MATRICE='ELASTIQUE')
-  LineSearchSettings lineSearch; // RECH_LINEAIRE
+  double resiGlobRela = 1.0e-6; // RESI_GLOB_RELA (<= 0: not used)
+  double resiGlobMaxi = -1.0;   // RESI_GLOB_MAXI (<= 0: not used)
+  int iterGlobMaxi = 10;        // ITER_GLOB_MAXI (ITER_GLOB_ELAS with MATRICE='ELASTIQUE')
+  CriteriaCombination verif = CriteriaCombination::All; // CONVERGENCE/VERIF
+  bool symmetrizeTangent = false; // NEWTON/MATR_RIGI_SYME='OUI': (K + K^T) / 2, factorised symmetric
+  LineSearchSettings lineSearch;  // RECH_LINEAIRE
   // PREDICTION='DEPL_CALCULE': the displacement (physical size) of NEWTON/EVOL_NOLI at a time.
   std::function<Eigen::VectorXd(double)> computedDisplacement;
 };
@@ -79,6 +85,8 @@ public:
   // A condition solved with the mechanical equations (contact), or none (the default: nothing
   // of it is called). Not owned.
   void setConstraint(StepConstraint* constraint) { constraint_ = constraint; }
+  // Extra columns of the convergence table (SUIVI_DDL), or none. Not owned.
+  void setIterationColumns(const IterationColumns* columns) { columns_ = columns; }
 
   // Converged steps so far (REAC_INCR counts them).
   int convergedSteps() const { return convergedSteps_; }
@@ -113,6 +121,7 @@ private:
   NewtonSettings settings_;
   std::ostream& log_;
   StepConstraint* constraint_ = nullptr;
+  const IterationColumns* columns_ = nullptr;
   bool elasticFactorized_ = false;
   double forceScale_ = 0.0; // RESI_GLOB_RELA reference of the last step converged under load
   int convergedSteps_ = 0;

@@ -109,6 +109,7 @@ NewtonSettings readNewtonSettings(const KeywordTree& kw, const MechanicalSystem&
     if (s.prediction == Prediction::Computed) {
       s.computedDisplacement = computedDisplacement(nw, system);
     }
+    s.symmetrizeTangent = nw.textOr("MATR_RIGI_SYME", "NON") == "OUI";
   }
   if (kw.has("CONVERGENCE")) {
     const KeywordTree& cv = kw.occurrences("CONVERGENCE").front();
@@ -117,6 +118,8 @@ NewtonSettings readNewtonSettings(const KeywordTree& kw, const MechanicalSystem&
     // With the elastic matrix code_aster allows ITER_GLOB_ELAS iterations.
     s.iterGlobMaxi = static_cast<int>(s.tangentMatrix ? cv.integerOr("ITER_GLOB_MAXI", 10)
                                                       : cv.integerOr("ITER_GLOB_ELAS", 25));
+    s.verif = cv.textOr("VERIF", "TOUT") == "AU_MOINS_UN" ? CriteriaCombination::AtLeastOne
+                                                          : CriteriaCombination::All;
   }
   readLineSearch(kw, s);
   return s;

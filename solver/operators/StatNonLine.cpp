@@ -5,6 +5,8 @@
 // Steps that fail are cut as the DEFI_LIST_INST says (TimeStepper); ARCHIVAGE selects the
 // stored steps; ETAT_INIT / reuse= start from a stored step. A failure after every allowed cut
 // stops the run with <S>_NO_CONVERGENCE, keeping every stored step and the last converged one.
+// OBSERVATION and MESURE fill the result's tables 'OBSERVATION' and 'STAT' (RECU_TABLE);
+// SUIVI_DDL adds columns to the convergence tables, whose output AFFICHAGE directs.
 // What the catalogue has and stella does not is refused by name (StatNonLineKeywords).
 
 #include "interpreter/Diagnostics.hpp"
@@ -14,13 +16,17 @@
 #include "solver/model/Selection.hpp"
 #include "solver/nonlinear/Archiving.hpp"
 #include "solver/nonlinear/CommandInputs.hpp"
+#include "solver/nonlinear/ConvergenceTableOutput.hpp"
+#include "solver/nonlinear/DofMonitor.hpp"
 #include "solver/nonlinear/NewtonDriver.hpp"
+#include "solver/nonlinear/Observation.hpp"
 #include "solver/nonlinear/PhaseTimes.hpp"
 #include "solver/nonlinear/ProgressLine.hpp"
 #include "solver/nonlinear/ResultFields.hpp"
 #include "solver/nonlinear/ResultLoads.hpp"
 #include "solver/nonlinear/StatNonLineInputs.hpp"
 #include "solver/nonlinear/StatNonLineKeywords.hpp"
+#include "solver/nonlinear/StepMeasures.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 
@@ -92,6 +98,29 @@ int store(Result& result, const MechanicalState& s, MechanicalSystem& system,
   return step.number;
 }
 
+// The fields of a state that OBSERVATION reads: those a stored step has, and EPSI_ELGA.
+ResultStep observedFields(const MechanicalState& s, const MechanicalSystem& system,
+                          const StepConstraint* constraint) {
+  ResultStep step;
+  step.time = s.time;
+  storeMechanicalFields(step, system.model(), system.dofs(), s.displacement, s.points, true, true);
+  step.fields["EPSI_ELGA"] = std::make_shared<Field>(s.points.strain);
+  if (constraint != nullptr) {
+    constraint->store(step);
+  }
+  return step;
+}
+
+void observe(Observations& observations, int index, const MechanicalState& s, const MechanicalSystem& system,
+             const StepConstraint* constraint) {
+  if (observations.empty()) {
+    return;
+  }
+  const ResultStep fields = observedFields(s, system, constraint);
+  observations.observe(
+      index, s.time, [&](const std::string& name) { return fields.field(name); }, *system.model().mesh);
+}
+
 std::string effectsLine(const MechanicalSystem& system, const NewtonSettings& settings,
                         const StepConstraint* constraint, const CutPolicy& cuts) {
   const bool linear = system.behaviours().allLinear();
@@ -99,7 +128,10 @@ std::string effectsLine(const MechanicalSystem& system, const NewtonSettings& se
       "   effects: {}, {} load(s), {} {} factorisation, {} Lagrange multiplier(s), {}{}, step cutting {}\n",
       linear ? "elasticity (no return mapping)"
              : fmt::format("{} (return mapping)", fmt::join(system.behaviours().relationNames(), ", ")),
-      system.excitations().size(), system.behaviours().allSymmetric() ? "symmetric" : "unsymmetric",
+      system.excitations().size(),
+      settings.symmetrizeTangent           ? "symmetric (MATR_RIGI_SYME: (K + K^T) / 2)"
+      : system.behaviours().allSymmetric() ? "symmetric"
+                                           : "unsymmetric",
       settings.tangentMatrix ? "tangent" : "elastic", system.relationCount(),
       constraint != nullptr ? constraint->effects() : std::string("no contact"),
       settings.lineSearch.enabled ? ", line search CORDE" : "",
@@ -128,8 +160,13 @@ Value runStatNonLine(OperatorCall& call) {
   const CutPolicy cuts = readCutPolicy(list.get());
   const ArchiveSelection archive = ArchiveSelection::read(kw);
   const NewtonSettings settings = readNewtonSettings(kw, system);
+  Observations observations = Observations::read(kw, *model->mesh);
+  StepMeasures measures = StepMeasures::read(kw);
   auto& msg = call.session.message();
-  NewtonDriver driver(system, settings, msg);
+  ConvergenceTableOutput tables(kw, call.session); // AFFICHAGE
+  NewtonDriver driver(system, settings, tables);
+  const std::unique_ptr<DofMonitor> monitor = DofMonitor::read(kw, system); // SUIVI_DDL
+  driver.setIterationColumns(monitor.get());
   const std::unique_ptr<StepConstraint> constraint = makeContactConstraint(kw, system);
   if (constraint != nullptr) {
     constraint->setDiagnosticSink(&call.session); // its alarms count in the job diagnostic
@@ -152,17 +189,27 @@ Value runStatNonLine(OperatorCall& call) {
   rememberLoads(result, system.excitations());
   rememberCharacteristics(result, readCaraElem(kw));
   Value made = call.makeConcept(result);
+  observations.attach(*result);
+  measures.attach(*result);
+  observe(observations, 0, state, system, constraint.get());
 
   ProgressLine progress(times.front(), times.back());
   TimeStepper stepper(cuts, msg);
   stepper.onAttempt([&](double, double) { progress.erase(); });
   bool lastStored = true;
   SteppingResult run;
+  int converged = 0;
+  measures.startStep(system);
   try {
     run = stepper.run(
         state, times,
-        [&](const MechanicalState& s, double t, MechanicalState& e) { return driver.step(s, t, e); },
+        [&](const MechanicalState& s, double t, MechanicalState& e) {
+          tables.beginStep(converged + 1);
+          return driver.step(s, t, e);
+        },
         [&](const MechanicalState& s, const ConvergedStep& c) {
+          ++converged;
+          measures.endStep(system, c.time, c.outcome.iterations, c.outcome.lineSearchIterations);
           if (constraint != nullptr) {
             constraint->reportStep(msg);
           }
@@ -179,8 +226,10 @@ Value runStatNonLine(OperatorCall& call) {
                   ? fmt::format(", {} line search iteration(s)", c.outcome.lineSearchIterations)
                   : "",
               stored);
+          observe(observations, c.index, s, system, constraint.get());
           msg.flush();
           progress.show(c.time, c.index, c.cuts);
+          measures.startStep(system);
         });
   } catch (const UserError&) {
     // An error in a step (a singular matrix, a failed behaviour...): the steps stored so far
@@ -193,6 +242,7 @@ Value runStatNonLine(OperatorCall& call) {
     throw;
   }
   progress.erase();
+  measures.write(call.session);
   const int reused = system.solver().reusedFactorizations();
   msg << fmt::format("   linear solver: {}, {} factorisation(s){}; {} step(s) computed, {} cut(s)\n",
                      system.solver().backendName(), system.solver().factorizations(),

@@ -1,0 +1,63 @@
+// ConvergenceTableOutput: AFFICHAGE (PAS, UNITE) applied to the convergence tables.
+
+#include "solver/nonlinear/ConvergenceTableOutput.hpp"
+
+#include "interpreter/Diagnostics.hpp"
+#include "solver/session/Session.hpp"
+
+#include <fmt/format.h>
+
+namespace stella {
+
+ConvergenceTableOutput::ConvergenceTableOutput(const KeywordTree& kw, Session& session)
+    : std::ostream(nullptr) {
+  rdbuf(&buffer_);
+  buffer_.message = &session.message();
+  if (!kw.has("AFFICHAGE")) {
+    return;
+  }
+  const KeywordTree& occ = kw.occurrences("AFFICHAGE").front();
+  every_ = static_cast<int>(occ.integerOr("PAS", 1));
+  if (occ.has("UNITE")) {
+    const int unit = static_cast<int>(occ.integer("UNITE"));
+    if (unit == 6) {
+      return; // the message file already has every table
+    }
+    if (unit == 8) {
+      buffer_.unit = &session.result();
+      return;
+    }
+    unitFile_ = std::make_unique<std::ofstream>(session.unitPath(unit, occ.locationOf("UNITE"), false),
+                                                std::ios::app);
+    if (!*unitFile_) {
+      throw UserError(Diagnostic::fatal("SNL_22", fmt::format("AFFICHAGE: unit {} cannot be written", unit),
+                                        occ.locationOf("UNITE")));
+    }
+    buffer_.unit = unitFile_.get();
+  }
+}
+
+void ConvergenceTableOutput::beginStep(int number) {
+  buffer_.shown = every_ <= 1 || (number - 1) % every_ == 0;
+}
+
+ConvergenceTableOutput::Buffer::int_type ConvergenceTableOutput::Buffer::overflow(int_type c) {
+  if (traits_type::eq_int_type(c, traits_type::eof())) {
+    return traits_type::not_eof(c);
+  }
+  const char ch = traits_type::to_char_type(c);
+  xsputn(&ch, 1);
+  return c;
+}
+
+std::streamsize ConvergenceTableOutput::Buffer::xsputn(const char* s, std::streamsize n) {
+  if (shown) {
+    message->write(s, n);
+  }
+  if (unit != nullptr) {
+    unit->write(s, n);
+  }
+  return n;
+}
+
+} // namespace stella

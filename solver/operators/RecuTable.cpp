@@ -1,0 +1,50 @@
+// RECU_TABLE: a copy of a table attached to a result (NOM_TABLE), as a table concept.
+
+#include "interpreter/Diagnostics.hpp"
+#include "solver/database/Result.hpp"
+#include "solver/post/Table.hpp"
+#include "solver/session/OperatorRegistry.hpp"
+
+#include <fmt/format.h>
+
+namespace stella {
+
+namespace {
+
+Value runRecuTable(OperatorCall& call) {
+  const KeywordTree& kw = call.keywords;
+  if (kw.has("NOM_PARA")) {
+    throw UserError(
+        Diagnostic::fatal("TABLE_6", "RECU_TABLE/NOM_PARA is not implemented yet", kw.locationOf("NOM_PARA"))
+            .withNote("give NOM_TABLE, the name of a table the result holds"));
+  }
+  auto source = kw.conceptValue("CO");
+  auto result = conceptData<Result>(source);
+  STELLA_ASSERT(result != nullptr, "RECU_TABLE: CO holds no result");
+  const std::string name = kw.text("NOM_TABLE");
+  auto it = result->tables.find(name);
+  std::vector<std::string> names;
+  for (const auto& [n, t] : result->tables) {
+    names.push_back("'" + n + "'");
+  }
+  auto found = it == result->tables.end() ? nullptr : std::dynamic_pointer_cast<Table>(it->second);
+  if (!found) {
+    throw UserError(
+        Diagnostic::fatal("TABLE_7", fmt::format("RECU_TABLE: {} has no table '{}'", source->name, name),
+                          kw.locationOf("NOM_TABLE"))
+            .withNote(names.empty() ? "the result holds no table: STAT_NON_LINE attaches 'OBSERVATION' "
+                                      "(OBSERVATION=_F(...)) and 'STAT' (MESURE=_F(TABLE='OUI'))"
+                                    : fmt::format("the result holds: {}", fmt::join(names, ", "))));
+  }
+  auto table = std::make_shared<Table>(*found);
+  if (kw.has("TITRE")) {
+    table->title = kw.text("TITRE");
+  }
+  return call.makeConcept(table);
+}
+
+} // namespace
+
+STELLA_OPERATOR("RECU_TABLE", runRecuTable);
+
+} // namespace stella
