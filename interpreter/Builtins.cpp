@@ -1,6 +1,7 @@
 // Python's built-in functions available in command files (range, len, min, max, sorted, _F,
 // print...) and the math module.
 #include "Evaluator.hpp"
+#include "Exceptions.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -254,6 +255,11 @@ bool isInstanceOf(const Value& v, const Value& type) {
     }
     return false;
   }
+  if (const auto* cls =
+          type.isCallable() ? dynamic_cast<const ExceptionClass*>(type.asCallable().get()) : nullptr) {
+    const auto* e = v.isNative() ? dynamic_cast<const ExceptionObject*>(v.asNative().get()) : nullptr;
+    return e != nullptr && e->exceptionClass().isSubclassOf(*cls);
+  }
   const Builtin* b = type.isCallable() ? dynamic_cast<const Builtin*>(type.asCallable().get()) : nullptr;
   if (b == nullptr) {
     langError("LANG_TYPE",
@@ -333,6 +339,11 @@ Value typeOf(const Value& v) {
     return builtinNames().at("tuple");
   case Value::Kind::Dict:
     return builtinNames().at("dict");
+  case Value::Kind::Native:
+    if (const auto* e = dynamic_cast<const ExceptionObject*>(v.asNative().get())) {
+      return exceptionNames().at(e->exceptionClass().name());
+    }
+    return Value(v.typeName());
   default:
     return Value(v.typeName());
   }
@@ -583,6 +594,9 @@ const std::unordered_map<std::string, Value>& builtinNames() {
     };
     for (const auto& [id, name] : table) {
       n.emplace(name, builtinValue(id, name));
+    }
+    for (const auto& [name, value] : exceptionNames()) {
+      n.emplace(name, value);
     }
     return n;
   }();
