@@ -178,6 +178,9 @@ private:
 // The global names every command file sees (built-ins) and the math module's contents.
 const std::unordered_map<std::string, Value>& builtinNames();
 const std::unordered_map<std::string, Value>& mathNames();
+// The sandboxed `os.path` (join, basename, dirname, split, splitext, isabs, sep): string
+// functions only, no access to the file system (OsPath.cpp).
+const std::unordered_map<std::string, Value>& osPathNames();
 Value callBuiltin(Evaluator& ev, const Builtin& b, const CallArguments& args, const Pos& at);
 // str/list/dict/tuple methods: `s.upper()`, `l.append(x)`; nullopt when there is no such method.
 std::optional<Value> callMethod(Evaluator& ev, const Value& object, const std::string& name,
