@@ -2,6 +2,7 @@
 // print...) and the math module.
 #include "Evaluator.hpp"
 #include "Exceptions.hpp"
+#include "SequenceObject.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -95,6 +96,9 @@ Value length(const Value& v) {
   }
   if (const RangeObject* r = asRange(v)) {
     return Value(r->size());
+  }
+  if (const auto* seq = v.isNative() ? dynamic_cast<const SequenceObject*>(v.asNative().get()) : nullptr) {
+    return Value(seq->length());
   }
   langError("LANG_TYPE", "object of type '" + v.typeName() + "' has no len()");
 }
