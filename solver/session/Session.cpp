@@ -63,7 +63,7 @@ double callRealFunction(const RealFunction& function, const std::string& name, c
 // the string) and functions and lists can be called or read later in the file.
 bool runsWhenChecking(const std::string& command) {
   return command == "FIN" || command == "FORMULE" || command == "DEFI_FONCTION" ||
-         command == "DEFI_LIST_REEL";
+         command == "DEFI_CONSTANTE" || command == "DEFI_LIST_REEL";
 }
 
 constexpr int frameWidth = 80;
