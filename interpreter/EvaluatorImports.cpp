@@ -1,7 +1,9 @@
 // The evaluator's imports: `import math`, the sandboxed `os.path`, the code_aster namespaces
-// accepted as no-ops, and the refusal of any other module.
+// accepted as no-ops (with code_aster's error classes; `import aster` for `aster.error`), and the
+// refusal of any other module.
 #include "EvaluatorParts.hpp"
 
+#include "Exceptions.hpp"
 #include "Suggest.hpp"
 
 #include <algorithm>
@@ -19,6 +21,10 @@ public:
   std::string typeName() const override { return "module " + name_; }
   std::shared_ptr<const Value> attribute(const std::string& name) const override {
     auto it = names_->find(name);
+    if (it == names_->end() && names_ != &exceptionNames() && exceptionNames().contains(name) &&
+        !sandboxed_) {
+      return std::make_shared<const Value>(exceptionNames().at(name)); // code_aster.AsterError
+    }
     if (it == names_->end()) {
       if (sandboxed_) {
         refuseSandboxed(name_, name, *names_);
@@ -61,6 +67,15 @@ const std::unordered_map<std::string, Value>& osNames() {
   return names;
 }
 
+// Older code_aster files: `import aster` for its error classes (`except aster.error:`).
+const std::unordered_map<std::string, Value>& asterNames() {
+  static const std::unordered_map<std::string, Value> names = {
+      {"error", exceptionNames().at("AsterError")},
+      {"NonConvergenceError", exceptionNames().at("ConvergenceError")},
+  };
+  return names;
+}
+
 Value osModule() {
   return Value(std::shared_ptr<NativeObject>(std::make_shared<ModuleObject>("os", &osNames(), true)));
 }
@@ -84,6 +99,9 @@ void Evaluator::execImport(const Stmt& s) {
     } else if (in.name == "math") {
       bindName(bound,
                Value(std::shared_ptr<NativeObject>(std::make_shared<ModuleObject>("math", &mathNames()))));
+    } else if (in.name == "aster") {
+      bindName(bound, Value(std::shared_ptr<NativeObject>(
+                          std::make_shared<ModuleObject>("aster", &asterNames(), true))));
     } else if (isCodeAsterModule(in.name)) {
       bindName(bound,
                Value(std::shared_ptr<NativeObject>(std::make_shared<ModuleObject>(in.name, &globals_))));
