@@ -91,6 +91,11 @@ const ExceptionTable& table() {
     t.add("ImportError", base);
     const ExceptionClass* runtime = t.add("RuntimeError", base);
     t.add("NotImplementedError", runtime);
+    // never raised (files cannot reach the file system), named by `except OSError:` clauses
+    const ExceptionClass* os = t.add("OSError", base);
+    t.add("FileNotFoundError", os);
+    t.classes["IOError"] = t.classes.at("OSError"); // Python 3: one class, two names
+    t.names.emplace("IOError", t.names.at("OSError"));
     // code_aster's errors (code_aster.AsterError and its subclasses): named by real files
     const ExceptionClass* aster = t.add("AsterError", base);
     for (const char* name :
