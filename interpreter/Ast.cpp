@@ -57,9 +57,10 @@ const char* exprKindName(ExprKind k) {
 }
 
 const char* stmtKindName(StmtKind k) {
-  static const char* const names[] = {"Expr",   "Assign",     "AugAssign", "For",   "While", "If",
-                                      "Pass",   "Break",      "Continue",  "Del",   "Def",   "Return",
-                                      "Import", "FromImport", "Global",    "Assert"};
+  static const char* const names[] = {"Expr",   "Assign", "AugAssign",     "For",        "While",
+                                      "If",     "Pass",   "Break",         "Continue",   "Del",
+                                      "Def",    "Return", "Import",        "FromImport", "Global",
+                                      "Assert", "Try",    "ExceptHandler", "Raise"};
   return names[static_cast<int>(k)];
 }
 
@@ -165,8 +166,14 @@ struct Dumper {
     if (!s.body.empty()) {
       block("body", s.body, indent + 1);
     }
+    if (!s.handlers.empty()) {
+      block("handlers", s.handlers, indent + 1);
+    }
     if (!s.orelse.empty()) {
       block("else", s.orelse, indent + 1);
+    }
+    if (!s.finalbody.empty()) {
+      block("finally", s.finalbody, indent + 1);
     }
   }
 };

@@ -102,13 +102,16 @@ enum class StmtKind : std::uint8_t {
   Pass,
   Break,
   Continue,
-  Del,        // exprs: targets
-  Def,        // name, params, body
-  Return,     // exprs: [value]
-  Import,     // imports: module (dotted), alias
-  FromImport, // module; imports: name, alias ("*" for all)
-  Global,     // names in imports[i].name
-  Assert      // exprs: test, [message]
+  Del,           // exprs: targets
+  Def,           // name, params, body
+  Return,        // exprs: [value]
+  Import,        // imports: module (dotted), alias
+  FromImport,    // module; imports: name, alias ("*" for all)
+  Global,        // names in imports[i].name
+  Assert,        // exprs: test, [message]
+  Try,           // body; handlers (ExceptHandler); orelse: the `else:` suite; finalbody
+  ExceptHandler, // exprs: [type]; name: the `as` name (may be empty); body
+  Raise          // exprs: [exception] (none: re-raise the exception being handled)
 };
 
 struct Param {
@@ -136,7 +139,9 @@ struct Stmt {
   std::vector<ExprPtr> exprs;
   std::vector<StmtPtr> body;
   std::vector<StmtPtr> orelse;
-  std::string name; // def name; from-import module
+  std::vector<StmtPtr> handlers;  // Try: its `except` clauses
+  std::vector<StmtPtr> finalbody; // Try: its `finally:` suite
+  std::string name;               // def name; from-import module; `except ... as NAME`
   std::vector<Param> params;
   std::vector<ImportName> imports;
 

@@ -1,6 +1,8 @@
 // Python's built-in functions available in command files (range, len, min, max, sorted, _F,
 // print...) and the math module.
 #include "Evaluator.hpp"
+#include "Exceptions.hpp"
+#include "SequenceObject.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -94,6 +96,9 @@ Value length(const Value& v) {
   }
   if (const RangeObject* r = asRange(v)) {
     return Value(r->size());
+  }
+  if (const auto* seq = v.isNative() ? dynamic_cast<const SequenceObject*>(v.asNative().get()) : nullptr) {
+    return Value(seq->length());
   }
   langError("LANG_TYPE", "object of type '" + v.typeName() + "' has no len()");
 }
@@ -254,6 +259,11 @@ bool isInstanceOf(const Value& v, const Value& type) {
     }
     return false;
   }
+  if (const auto* cls =
+          type.isCallable() ? dynamic_cast<const ExceptionClass*>(type.asCallable().get()) : nullptr) {
+    const auto* e = v.isNative() ? dynamic_cast<const ExceptionObject*>(v.asNative().get()) : nullptr;
+    return e != nullptr && e->exceptionClass().isSubclassOf(*cls);
+  }
   const Builtin* b = type.isCallable() ? dynamic_cast<const Builtin*>(type.asCallable().get()) : nullptr;
   if (b == nullptr) {
     langError("LANG_TYPE",
@@ -333,6 +343,11 @@ Value typeOf(const Value& v) {
     return builtinNames().at("tuple");
   case Value::Kind::Dict:
     return builtinNames().at("dict");
+  case Value::Kind::Native:
+    if (const auto* e = dynamic_cast<const ExceptionObject*>(v.asNative().get())) {
+      return exceptionNames().at(e->exceptionClass().name());
+    }
+    return Value(v.typeName());
   default:
     return Value(v.typeName());
   }
@@ -583,6 +598,9 @@ const std::unordered_map<std::string, Value>& builtinNames() {
     };
     for (const auto& [id, name] : table) {
       n.emplace(name, builtinValue(id, name));
+    }
+    for (const auto& [name, value] : exceptionNames()) {
+      n.emplace(name, value);
     }
     return n;
   }();

@@ -8,6 +8,7 @@
 #include "Interpreter.hpp"
 #include "Runtime.hpp"
 
+#include <exception>
 #include <functional>
 #include <optional>
 #include <string>
@@ -80,6 +81,9 @@ private:
   void execAugAssign(const Stmt& s);
   Flow execFor(const Stmt& s);
   Flow execWhile(const Stmt& s);
+  Flow execTry(const Stmt& s);
+  Flow handleError(const Stmt& s, const UserError& error);
+  [[noreturn]] void execRaise(const Stmt& s);
   void execDel(const Stmt& s);
   void execDef(const Stmt& s);
   void execImport(const Stmt& s);
@@ -126,6 +130,7 @@ private:
   std::unordered_map<const void*, std::weak_ptr<ListObject>> mutatedLists_;
   std::unordered_map<const void*, std::weak_ptr<DictObject>> mutatedDicts_;
   const void* lastMutated_ = nullptr;
+  std::vector<std::exception_ptr> handling_; // errors whose `except` block runs (for a bare `raise`)
 };
 
 // Python's built-ins (range, len, print, _F...) and the math module.
@@ -173,6 +178,9 @@ private:
 // The global names every command file sees (built-ins) and the math module's contents.
 const std::unordered_map<std::string, Value>& builtinNames();
 const std::unordered_map<std::string, Value>& mathNames();
+// The sandboxed `os.path` (join, basename, dirname, split, splitext, isabs, sep): string
+// functions only, no access to the file system (OsPath.cpp).
+const std::unordered_map<std::string, Value>& osPathNames();
 Value callBuiltin(Evaluator& ev, const Builtin& b, const CallArguments& args, const Pos& at);
 // str/list/dict/tuple methods: `s.upper()`, `l.append(x)`; nullopt when there is no such method.
 std::optional<Value> callMethod(Evaluator& ev, const Value& object, const std::string& name,

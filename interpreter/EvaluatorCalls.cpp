@@ -1,6 +1,7 @@
 // The evaluator's calls: argument collection (keywords, *args, **kwargs), method calls, and the
 // calls of commands, native functions and user functions.
 #include "EvaluatorParts.hpp"
+#include "Exceptions.hpp"
 #include "Suggest.hpp"
 
 #include <algorithm>
@@ -154,7 +155,12 @@ Value Evaluator::callCommand(const std::string& name, const CallArguments& args,
       throw UserError(std::move(d));
     }
   }
-  Value result = handler_->callCommand(name, args, target);
+  Value result;
+  try {
+    result = handler_->callCommand(name, args, target);
+  } catch (const UserError& err) {
+    throw TracedError(err, true, nullptr);
+  }
   if (handler_->finished()) {
     throw FinishSignal{};
   }
@@ -179,7 +185,7 @@ Value Evaluator::callNative(const NativeCallable& fn, const CallArguments& args,
     if (!changed) {
       throw;
     }
-    throw UserError(std::move(ds));
+    rethrowWith(err, std::move(ds));
   } catch (const LangError& err) {
     raise(at, err);
   }

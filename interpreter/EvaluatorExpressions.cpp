@@ -307,7 +307,12 @@ Value Evaluator::attributeOf(const Value& object, const std::string& name, const
     return handler_->conceptAttribute(object.asConcept(), name, location(at));
   }
   if (object.isNative()) {
-    std::shared_ptr<const Value> v = object.asNative()->attribute(name);
+    std::shared_ptr<const Value> v;
+    try {
+      v = object.asNative()->attribute(name);
+    } catch (const LangError& e) {
+      raise(at, e);
+    }
     if (v) {
       return *v;
     }

@@ -1,6 +1,7 @@
 // The evaluator's statements: blocks, assignments to names and indexed targets, augmented
 // assignment, for/while loops with their caps, if, del, def and lambda.
 #include "EvaluatorParts.hpp"
+#include "Exceptions.hpp"
 
 #include "Formatter.hpp"
 
@@ -31,7 +32,7 @@ Evaluator::Flow Evaluator::execStatement(const Stmt& s) {
         d.location = location(s.pos);
       }
     }
-    throw UserError(std::move(ds));
+    rethrowWith(err, std::move(ds));
   }
 }
 
@@ -84,6 +85,12 @@ Evaluator::Flow Evaluator::execStatementOfKind(const Stmt& s) {
       }
     }
     return Flow::Normal;
+  case StmtKind::Try:
+    return execTry(s);
+  case StmtKind::ExceptHandler: // run by execTry
+    return Flow::Normal;
+  case StmtKind::Raise:
+    execRaise(s);
   case StmtKind::Assert:
     if (!eval(*s.exprs[0]).truthy()) {
       std::string message = "assertion failed: " + formatExpression(*s.exprs[0]);

@@ -366,6 +366,12 @@ private:
     if (!s.body.empty()) {
       end = std::max(end, endLineOf(*s.body.back()));
     }
+    if (!s.handlers.empty()) {
+      end = std::max(end, endLineOf(*s.handlers.back()));
+    }
+    if (!s.finalbody.empty()) {
+      end = std::max(end, endLineOf(*s.finalbody.back()));
+    }
     return end;
   }
 
@@ -445,6 +451,34 @@ private:
       } else {
         elseBlock(s, indent);
       }
+      break;
+    case StmtKind::Try:
+      emit(indent, "try:", s.pos.line, s.pos.line);
+      body(s.body, indent);
+      for (const auto& h : s.handlers) {
+        statement(*h, indent);
+      }
+      elseBlock(s, indent);
+      if (!s.finalbody.empty()) {
+        flushComments(s.finalbody.front()->pos.line - 1, indent + 1);
+        emit(indent, "finally:", 0, -1);
+        body(s.finalbody, indent);
+      }
+      break;
+    case StmtKind::ExceptHandler: {
+      std::string text = "except";
+      if (!s.exprs.empty()) {
+        text += " " + exprText(*s.exprs[0]);
+        if (!s.name.empty()) {
+          text += " as " + s.name;
+        }
+      }
+      emit(indent, text + ":", s.pos.line, s.pos.line);
+      body(s.body, indent);
+      break;
+    }
+    case StmtKind::Raise:
+      emit(indent, s.exprs.empty() ? "raise" : "raise " + exprText(*s.exprs[0]), s.pos.line, last);
       break;
     case StmtKind::Pass:
       emit(indent, "pass", s.pos.line, last);

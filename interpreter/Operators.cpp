@@ -1,6 +1,7 @@
 // Arithmetic, comparison, membership and indexing with Python's rules (int/float promotion,
 // floor division and modulo toward -infinity, sequence repetition and concatenation).
 #include "Runtime.hpp"
+#include "SequenceObject.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -614,6 +615,12 @@ Value getItem(const Value& container, const Value& index) {
   if (const RangeObject* r = asRange(container)) {
     return Value(r->at(static_cast<std::int64_t>(
         normalizeIndex(toIndex(index, "range index"), static_cast<std::size_t>(r->size()), "range"))));
+  }
+  if (const auto* seq =
+          container.isNative() ? dynamic_cast<const SequenceObject*>(container.asNative().get()) : nullptr) {
+    const std::string what = container.typeName();
+    return seq->item(static_cast<std::int64_t>(
+        normalizeIndex(toIndex(index, "index"), static_cast<std::size_t>(seq->length()), what.c_str())));
   }
   langError("LANG_TYPE", "'" + container.typeName() + "' object is not subscriptable",
             container.isConcept()

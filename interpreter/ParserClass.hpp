@@ -131,6 +131,8 @@ private:
   StmtPtr parseFor();
   StmtPtr parseWhile();
   StmtPtr parseDef();
+  StmtPtr parseTry();
+  StmtPtr parseRaise();
   std::vector<StmtPtr> parseSuite();
   void checkTarget(const Expr& e, bool del = false);
   std::string dottedName();

@@ -26,8 +26,9 @@ std::vector<StmtPtr> Parser::parseFileInput() {
 void Parser::parseStatement(std::vector<StmtPtr>& out) {
   bool compound = at(TokenKind::KwIf) || at(TokenKind::KwFor) || at(TokenKind::KwWhile) ||
                   at(TokenKind::KwDef) || at(TokenKind::KwElif) || at(TokenKind::KwElse) ||
-                  at(TokenKind::KwTry) || at(TokenKind::KwClass) || at(TokenKind::KwWith);
-  bool refusedTry = at(TokenKind::KwTry);
+                  at(TokenKind::KwTry) || at(TokenKind::KwClass) || at(TokenKind::KwWith) ||
+                  at(TokenKind::KwExcept) || at(TokenKind::KwFinally);
+  bool tryStatement = at(TokenKind::KwTry);
   try {
     if (at(TokenKind::Indent)) {
       report(cur_.pos, "unexpected indent", "SYNTAX_6",
@@ -48,15 +49,21 @@ void Parser::parseStatement(std::vector<StmtPtr>& out) {
     case TokenKind::KwDef:
       out.push_back(parseDef());
       return;
+    case TokenKind::KwTry:
+      out.push_back(parseTry());
+      return;
+    case TokenKind::KwExcept:
+    case TokenKind::KwFinally:
+      fail("'" + std::string(cur_.text) + "' without a matching 'try' at the same indentation", "SYNTAX_1",
+           "align it with its 'try'");
     case TokenKind::KwElif:
     case TokenKind::KwElse:
       fail("'" + std::string(cur_.text) + "' without a matching 'if' at the same indentation", "SYNTAX_1",
            "align it with its 'if'");
-    case TokenKind::KwTry:
     case TokenKind::KwClass:
     case TokenKind::KwWith:
       fail("'" + std::string(cur_.text) + "' statements are not part of the command language", "SYNTAX_12",
-           "command files use assignments, calls, if/for/while and def only");
+           "command files use assignments, calls, if/for/while/try and def only");
     case TokenKind::At:
       fail("decorators are not part of the command language", "SYNTAX_12");
     default:
@@ -67,8 +74,8 @@ void Parser::parseStatement(std::vector<StmtPtr>& out) {
     if (compound && at(TokenKind::Indent)) {
       skipBlock(); // the block of a header in error: its errors would be consequences
     }
-    // a refused `try` takes its except/else/finally clauses with it
-    while (refusedTry && (at(TokenKind::KwExcept) || at(TokenKind::KwFinally) || at(TokenKind::KwElse))) {
+    // a `try` in error takes its remaining except/else/finally clauses with it
+    while (tryStatement && (at(TokenKind::KwExcept) || at(TokenKind::KwFinally) || at(TokenKind::KwElse))) {
       synchronize();
       if (at(TokenKind::Indent)) {
         skipBlock();
@@ -179,6 +186,7 @@ StmtPtr Parser::parseSimpleStatement() {
     return s;
   }
   case TokenKind::KwRaise:
+    return parseRaise();
   case TokenKind::KwNonlocal:
   case TokenKind::KwYield:
     fail("'" + std::string(cur_.text) + "' is not part of the command language", "SYNTAX_12");
@@ -376,6 +384,63 @@ StmtPtr Parser::parseWhile() {
   if (accept(TokenKind::KwElse)) {
     expect(TokenKind::Colon, "':' after 'else'");
     s->orelse = parseSuite();
+  }
+  return s;
+}
+
+// try_stmt: 'try' ':' suite ((except_clause ':' suite)+ ['else' ':' suite] ['finally' ':' suite]
+//                          | 'finally' ':' suite)
+// except_clause: 'except' [test ['as' NAME]]
+StmtPtr Parser::parseTry() {
+  auto s = std::make_unique<Stmt>(StmtKind::Try, cur_.pos);
+  advance();
+  expect(TokenKind::Colon, "':' after 'try'");
+  s->body = parseSuite();
+  bool bare = false;
+  while (at(TokenKind::KwExcept)) {
+    auto h = std::make_unique<Stmt>(StmtKind::ExceptHandler, cur_.pos);
+    if (bare) {
+      fail("an 'except:' without a type must be the last 'except' clause", "SYNTAX_1",
+           "move the bare 'except:' after the clauses that name an error type");
+    }
+    advance();
+    if (!at(TokenKind::Colon)) {
+      h->exprs.push_back(parseTest());
+      if (accept(TokenKind::KwAs)) {
+        h->name = std::string(expect(TokenKind::Name, "a name after 'as'").text);
+      }
+    } else {
+      bare = true;
+    }
+    expect(TokenKind::Colon, "':' at the end of the 'except' line");
+    h->body = parseSuite();
+    s->handlers.push_back(std::move(h));
+  }
+  if (!s->handlers.empty() && accept(TokenKind::KwElse)) {
+    expect(TokenKind::Colon, "':' after 'else'");
+    s->orelse = parseSuite();
+  }
+  if (accept(TokenKind::KwFinally)) {
+    expect(TokenKind::Colon, "':' after 'finally'");
+    s->finalbody = parseSuite();
+  }
+  if (s->handlers.empty() && s->finalbody.empty()) {
+    fail("expected 'except' or 'finally' after the 'try' block, found " + describeToken(cur_), "SYNTAX_1",
+         "a 'try' block is followed by at least one 'except:' or a 'finally:' clause");
+  }
+  return s;
+}
+
+// raise_stmt: 'raise' [test]
+StmtPtr Parser::parseRaise() {
+  auto s = std::make_unique<Stmt>(StmtKind::Raise, cur_.pos);
+  advance();
+  if (!at(TokenKind::Newline) && !at(TokenKind::Semicolon) && !at(TokenKind::EndOfFile)) {
+    s->exprs.push_back(parseTest());
+    if (at(TokenKind::KwFrom)) {
+      fail("'raise ... from ...' is not part of the command language", "SYNTAX_12",
+           "raise the error alone: `raise ValueError('...')`");
+    }
   }
   return s;
 }

@@ -4,6 +4,7 @@
 // evaluator adds the location of the expression being evaluated and throws UserError.
 
 #include "Ast.hpp"
+#include "SequenceObject.hpp"
 #include "Value.hpp"
 
 #include <cstdint>
@@ -140,6 +141,16 @@ template <class F> void forEachItem(const Value& v, F&& f) {
       std::int64_t n = r->size();
       for (std::int64_t i = 0; i < n; ++i) {
         if (!f(Value(r->at(i)))) {
+          return;
+        }
+      }
+      return;
+    }
+    if (const auto* seq = v.isNative() ? dynamic_cast<const SequenceObject*>(v.asNative().get()) : nullptr) {
+      auto keep = v; // the object stays alive while iterating
+      std::int64_t n = seq->length();
+      for (std::int64_t i = 0; i < n; ++i) {
+        if (!f(seq->item(i))) {
           return;
         }
       }

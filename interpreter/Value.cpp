@@ -2,6 +2,7 @@
 #include "Value.hpp"
 
 #include "Diagnostics.hpp"
+#include "Exceptions.hpp"
 #include "StringEscape.hpp"
 
 #include <algorithm>
@@ -193,6 +194,9 @@ std::string reprOf(const Value& v, Visiting& visiting) {
     return "<" + std::string(v.asCallable()->isCommand() ? "command " : "function ") +
            v.asCallable()->name() + ">";
   case K::Native:
+    if (const auto* e = dynamic_cast<const ExceptionObject*>(v.asNative().get())) {
+      return e->reprText();
+    }
     return "<" + v.asNative()->typeName() + ">";
   }
   return "?";
@@ -347,6 +351,11 @@ std::string Value::repr() const {
 std::string Value::str() const {
   if (isString()) {
     return asString();
+  }
+  if (isNative()) {
+    if (const auto* e = dynamic_cast<const ExceptionObject*>(asNative().get())) {
+      return e->strText();
+    }
   }
   return repr();
 }

@@ -1,7 +1,9 @@
 #include "Session.hpp"
 
+#include "ConceptMethods.hpp"
 #include "OperatorRegistry.hpp"
 #include "catalog/Catalog.hpp"
+#include "interpreter/Suggest.hpp"
 #include "solver/functions/RealFunction.hpp"
 
 #include <algorithm>
@@ -61,7 +63,7 @@ double callRealFunction(const RealFunction& function, const std::string& name, c
 // the string) and functions and lists can be called or read later in the file.
 bool runsWhenChecking(const std::string& command) {
   return command == "FIN" || command == "FORMULE" || command == "DEFI_FONCTION" ||
-         command == "DEFI_LIST_REEL";
+         command == "DEFI_CONSTANTE" || command == "DEFI_LIST_REEL";
 }
 
 constexpr int frameWidth = 80;
@@ -275,11 +277,20 @@ Value Session::conceptAttribute(const std::shared_ptr<Concept>& object, const st
       });
     }
   }
-  throw UserError(Diagnostic::fatal("CONCEPT_1",
-                                    "the concept " + object->name + " (" + object->type +
-                                        ") has no attribute '" + name + "'",
-                                    at)
-                      .withNote("concept methods such as EXTR_TABLE are not implemented yet"));
+  if (ConceptMethod method = findConceptMethod(object->type, name)) {
+    return makeNativeFunction(name,
+                              [method, object](const CallArguments& args) { return method(*object, args); });
+  }
+  const std::vector<std::string> methods = conceptMethodNames(object->type);
+  Diagnostic d = Diagnostic::fatal(
+      "CONCEPT_1", "the concept " + object->name + " (" + object->type + ") has no attribute '" + name + "'",
+      at);
+  if (const std::string suggestion = suggestionNote(name, methods); !suggestion.empty()) {
+    d.withNote(suggestion);
+  }
+  d.withNote(fmt::format("the methods of a {} are {}; others (EXTR_TABLE...) are not implemented yet",
+                         object->type, fmt::join(methods, ", ")));
+  throw UserError(std::move(d));
 }
 
 } // namespace stella

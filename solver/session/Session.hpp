@@ -22,8 +22,9 @@ class Catalog;
 
 struct SessionOptions {
   // false for `stella check`: validate only, except the operators that only compute values of the
-  // language (FIN, FORMULE, DEFI_FONCTION, DEFI_LIST_REEL: see runsWhenChecking in Session.cpp), so
-  // that a formula's syntax is checked and F(x) or a list can be used later in the file.
+  // language (FIN, FORMULE, DEFI_FONCTION, DEFI_CONSTANTE, DEFI_LIST_REEL: see runsWhenChecking in
+  // Session.cpp), so that a formula's syntax is checked and F(x) or a list can be used later in the
+  // file.
   bool executeOperators = true;
   bool referenceOnly = false; // --reference-only: VALE_CALC lines are information
   std::filesystem::path workDirectory = ".";
