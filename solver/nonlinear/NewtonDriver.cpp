@@ -70,12 +70,33 @@ bool NewtonDriver::symmetric() const {
   return system_.behaviours().allSymmetric() && (constraint_ == nullptr || constraint_->symmetric());
 }
 
+namespace {
+
+// The largest diagonal term of the constraint's tangent (penalties E_N, E_T) over the largest of
+// the structure's stiffness K: a pivot is null relative to K, not to the penalties.
+double penaltyRatio(const StiffnessMatrix& k, const std::vector<Eigen::Triplet<double>>& triplets) {
+  double penalty = 0.0;
+  for (const auto& t : triplets) {
+    if (t.row() == t.col()) {
+      penalty = std::max(penalty, std::fabs(t.value()));
+    }
+  }
+  double stiffness = 0.0;
+  for (int i = 0; i < k.size(); ++i) {
+    stiffness = std::max(stiffness, std::fabs(k.diagonal(i)));
+  }
+  return stiffness > 0.0 ? std::max(1.0, penalty / stiffness) : 1.0;
+}
+
+} // namespace
+
 void NewtonDriver::factorizeMatrix(StiffnessMatrix& k, const Eigen::VectorXd& u) {
   StiffnessMatrix* matrix = &k;
   if (constraint_ != nullptr) {
     std::vector<Eigen::Triplet<double>> triplets;
     Eigen::VectorXd unused = Eigen::VectorXd::Zero(u.size());
     constraint_->addForces(u, unused, &triplets);
+    system_.solver().setPenaltyRatio(penaltyRatio(k, triplets)); // k: the structure's alone here
     if (!symmetric() && k.storage() == linalg::Storage::Upper) {
       // the constraint's tangent turned unsymmetric (friction): K in full storage
       matrix = &system_.stiffness(false);
