@@ -11,6 +11,7 @@ std::unique_ptr<LinearSolver> makeUmfpack(const SolverOptions& o, MatrixKind k);
 std::unique_ptr<LinearSolver> makeConjugateGradient(const SolverOptions& o);
 
 // Smallest pivot relative to the largest: index of the first |d_k| <= 10^-nprec max|d|, or -1.
-int firstNullPivot(const Eigen::Ref<const Eigen::VectorXd>& pivots, int nprec);
+// `ratio` (setPenaltyRatio) divides the threshold.
+int firstNullPivot(const Eigen::Ref<const Eigen::VectorXd>& pivots, int nprec, double ratio = 1.0);
 
 } // namespace stella::linalg::detail

@@ -73,7 +73,7 @@ public:
     }
     if (options_.stopIfSingular) {
       const Eigen::VectorXd d = diagonal();
-      const int k = firstNullPivot(d.cwiseProduct(d), options_.nprec);
+      const int k = firstNullPivot(d.cwiseProduct(d), options_.nprec, penaltyRatio_);
       if (k >= 0) {
         throw SingularMatrixError("CHOLMOD", static_cast<const int*>(factor_->Perm)[k]);
       }

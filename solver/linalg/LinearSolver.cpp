@@ -49,13 +49,13 @@ std::unique_ptr<LinearSolver> makeLinearSolver(const SolverOptions& options, Mat
 
 namespace detail {
 
-int firstNullPivot(const Eigen::Ref<const Eigen::VectorXd>& pivots, int nprec) {
+int firstNullPivot(const Eigen::Ref<const Eigen::VectorXd>& pivots, int nprec, double ratio) {
   if (pivots.size() == 0) {
     return -1;
   }
   const double largest = pivots.cwiseAbs().maxCoeff();
   // NPREC < 0 turns the detection off: only an exactly zero (or not finite) pivot is null
-  const double threshold = nprec < 0 ? 0.0 : std::pow(10.0, -nprec) * largest;
+  const double threshold = nprec < 0 ? 0.0 : std::pow(10.0, -nprec) * largest / ratio;
   for (Eigen::Index k = 0; k < pivots.size(); ++k) {
     if (!(std::abs(pivots[k]) > threshold)) {
       return static_cast<int>(k);

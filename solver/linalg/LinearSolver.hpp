@@ -74,9 +74,15 @@ public:
   virtual void factorise(const SparseMatrix& a) = 0;
   // Solves in place for every column of `rhs` (n x k) with the last factorisation.
   virtual void solve(Eigen::Ref<Eigen::MatrixXd> rhs) = 0;
+  // The next factorisations' matrices carry penalty terms `ratio` (>= 1) times the structure's
+  // largest stiffness: a pivot is null below 10^-NPREC of the structure's stiffness, i.e. of the
+  // matrix's largest term divided by `ratio` (else a penalty 1e7 times the stiffness makes the
+  // structure's own pivots look null at NPREC = 8).
+  void setPenaltyRatio(double ratio) { penaltyRatio_ = ratio > 1.0 ? ratio : 1.0; }
 
 protected:
   explicit LinearSolver(MatrixKind k) : kind_(k) {}
+  double penaltyRatio_ = 1.0;
 
 private:
   MatrixKind kind_;

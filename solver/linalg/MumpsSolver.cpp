@@ -104,6 +104,9 @@ public:
 
   void factorise(const SparseMatrix& a) override {
     id_.a = const_cast<double*>(a.values().data()); // MUMPS does not modify A
+    if (options_.nprec >= 0) {
+      id_.cntl[2] = std::pow(10.0, -options_.nprec) / penaltyRatio_; // CNTL(3), see setPenaltyRatio
+    }
     for (int attempt = 0;; ++attempt) {
       id_.job = jobFactorise;
       dmumps_c(&id_);

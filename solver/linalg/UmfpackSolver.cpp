@@ -111,7 +111,7 @@ private:
         }
       }
     } else {
-      k = firstNullPivot(d, nprec);
+      k = firstNullPivot(d, nprec, penaltyRatio_);
     }
     return k < 0 ? -1 : q[static_cast<std::size_t>(k)];
   }

@@ -16,12 +16,13 @@ namespace stella {
 
 namespace {
 
-// RESI_GLOB_RELA of an iteration: max |residual| / max |external forces - reactions|. When that
-// reference vanishes (below the round-off of the last reference, or of 1) the relative criterion
-// has no scale: as code_aster does (U4.51.04 §6, alarm MECANONLINE2_98), RESI_GLOB_RELA is shown
-// as -1 and the residual is tested in absolute, against RESI_GLOB_MAXI when given, else
-// RESI_GLOB_RELA x the reference of the last step converged under load; the relative test
-// returns to force as soon as the load does.
+// RESI_GLOB_RELA of an iteration: max |residual| / the reference (residualReference). When that
+// reference vanishes (below the round-off of the last reference and of this step's forces, or of
+// 1) the relative criterion has no scale: as code_aster does (U4.51.04 §6, alarm
+// MECANONLINE2_98), RESI_GLOB_RELA is shown as -1 and the residual is tested in absolute, against
+// RESI_GLOB_MAXI when given, else RESI_GLOB_RELA x the largest of the reference of the last step
+// converged under load and of this step's forces (a contact that pushes bodies apart until no
+// force is left); the relative test returns to force as soon as the load does.
 struct RelativeTest {
   double rela = 0.0;
   bool ok = false;
@@ -70,12 +71,33 @@ bool NewtonDriver::symmetric() const {
   return system_.behaviours().allSymmetric() && (constraint_ == nullptr || constraint_->symmetric());
 }
 
+namespace {
+
+// The largest diagonal term of the constraint's tangent (penalties E_N, E_T) over the largest of
+// the structure's stiffness K: a pivot is null relative to K, not to the penalties.
+double penaltyRatio(const StiffnessMatrix& k, const std::vector<Eigen::Triplet<double>>& triplets) {
+  double penalty = 0.0;
+  for (const auto& t : triplets) {
+    if (t.row() == t.col()) {
+      penalty = std::max(penalty, std::fabs(t.value()));
+    }
+  }
+  double stiffness = 0.0;
+  for (int i = 0; i < k.size(); ++i) {
+    stiffness = std::max(stiffness, std::fabs(k.diagonal(i)));
+  }
+  return stiffness > 0.0 ? std::max(1.0, penalty / stiffness) : 1.0;
+}
+
+} // namespace
+
 void NewtonDriver::factorizeMatrix(StiffnessMatrix& k, const Eigen::VectorXd& u) {
   StiffnessMatrix* matrix = &k;
   if (constraint_ != nullptr) {
     std::vector<Eigen::Triplet<double>> triplets;
     Eigen::VectorXd unused = Eigen::VectorXd::Zero(u.size());
     constraint_->addForces(u, unused, &triplets);
+    system_.solver().setPenaltyRatio(penaltyRatio(k, triplets)); // k: the structure's alone here
     if (!symmetric() && k.storage() == linalg::Storage::Upper) {
       // the constraint's tangent turned unsymmetric (friction): K in full storage
       matrix = &system_.stiffness(false);
@@ -234,6 +256,18 @@ double NewtonDriver::lineSearch(const MechanicalState& start, const Eigen::Vecto
   return best;
 }
 
+double NewtonDriver::residualReference(const Eigen::VectorXd& fext, const Eigen::VectorXd& reactions,
+                                       const Eigen::VectorXd& fint, const Eigen::VectorXd& forces) const {
+  const auto& eliminated = system_.solver().eliminated();
+  double reference = 0.0;
+  for (Eigen::Index i = 0; i < fext.size(); ++i) {
+    const double applied =
+        eliminated[static_cast<std::size_t>(i)] ? std::fabs(fint(i)) : std::fabs(fext(i) - reactions(i));
+    reference = std::max({reference, applied, std::fabs(forces(i))});
+  }
+  return reference;
+}
+
 StepOutcome NewtonDriver::step(const MechanicalState& start, double time, MechanicalState& end) {
   const int n = system_.dofs().physicalCount();
   const Eigen::VectorXd fext = system_.externalForces(time);
@@ -257,6 +291,13 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
   StepOutcome out;
   if (constraint_ != nullptr) {
     constraint_->beginStep(start.displacement, time);
+  }
+  {
+    // The forces the step starts with: the new loads, the reactions of the start and the
+    // constraint's forces at the start (a penalised interpenetration of the pairing).
+    Eigen::VectorXd fint = Eigen::VectorXd::Zero(n);
+    stepScale_ = residualReference(fext, system_.solver().transposeTimes(start.multipliers), fint,
+                                   constraintForces(start.displacement));
   }
   // With RECH_LINEAIRE a column gives the length rho of the line search that led to the row.
   const bool rhoColumn = settings_.lineSearch.enabled;
@@ -315,20 +356,15 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
     }
     const Eigen::VectorXd reactions = system_.solver().transposeTimes(lambda);
     const Eigen::VectorXd forces = constraintForces(start.displacement + du);
-    Eigen::VectorXd reference = fext - reactions + forces;
-    for (int i = 0; i < n; ++i) {
-      if (eliminated[static_cast<std::size_t>(i)]) {
-        reference(i) = fint(i);
-      }
-    }
     Eigen::Index where = 0;
     const double maxi = n > 0 ? r.cwiseAbs().maxCoeff(&where) : 0.0;
-    const double denominator = n > 0 ? reference.cwiseAbs().maxCoeff() : 0.0;
-    const RelativeTest test = relativeTest(maxi, denominator, forceScale_, settings_);
+    const double denominator = residualReference(fext, reactions, fint, forces);
+    stepScale_ = std::max(stepScale_, denominator);
+    const RelativeTest test = relativeTest(maxi, denominator, std::max(forceScale_, stepScale_), settings_);
     const double rela = test.rela;
     if (test.nullLoad && !nullLoadNoted) {
       nullLoadNoted = true;
-      if (forceScale_ <= 0.0 && settings_.resiGlobMaxi <= 0.0 && maxi > 0.0) {
+      if (std::max(forceScale_, stepScale_) <= 0.0 && settings_.resiGlobMaxi <= 0.0 && maxi > 0.0) {
         throw UserError(
             Diagnostic::fatal("SNL_11",
                               fmt::format("INST {}: the external forces and the reactions are zero, so "
@@ -343,9 +379,10 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
           "RESI_GLOB_MAXI <= {:.3e}{}\n",
           test.tolerance,
           settings_.resiGlobMaxi > 0.0 ? " (given)"
-                                       : fmt::format(" = RESI_GLOB_RELA x {:.3e}, the reference "
-                                                     "of the last step converged under load",
-                                                     forceScale_));
+                                       : fmt::format(" = RESI_GLOB_RELA x {:.3e}, the largest reference "
+                                                     "of the last step converged under load and of "
+                                                     "this step's forces",
+                                                     std::max(forceScale_, stepScale_)));
     }
     const std::string at =
         n > 0 ? system_.dofs().describe(static_cast<int>(where), *system_.model().mesh) : "-";

@@ -124,6 +124,14 @@ private:
   const IterationColumns* columns_ = nullptr;
   bool elasticFactorized_ = false;
   double forceScale_ = 0.0; // RESI_GLOB_RELA reference of the last step converged under load
+  // The forces of the current step so far: the new loads and the constraint's forces at the
+  // step start, then each iteration's reference (judges when a reference has vanished).
+  double stepScale_ = 0.0;
+  // The RESI_GLOB_RELA reference of an iteration: the largest of |F_ext - reactions| on the free
+  // DOFs, |F_int| on the eliminated ones and |constraint forces| on every DOF, each apart, so that
+  // a contact force and the reaction of the fixed node it acts on do not cancel.
+  double residualReference(const Eigen::VectorXd& fext, const Eigen::VectorXd& reactions,
+                           const Eigen::VectorXd& fint, const Eigen::VectorXd& forces) const;
   int convergedSteps_ = 0;
   bool factorized_ = false;
   Eigen::VectorXd lastIncrement_; // of the last converged step (EXTRAPOLE)

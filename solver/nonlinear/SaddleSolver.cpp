@@ -278,6 +278,7 @@ void SaddleSolver::factorize(const StiffnessMatrix& k, bool symmetric) {
     }
     factorisedValues_.clear();
     const auto t = Clock::now();
+    solver_->setPenaltyRatio(penaltyRatio_);
     solver_->factorise(bordered_);
     timings_.factorisation += secondsSince(t);
     if (keepUnchanged_) {

@@ -58,6 +58,9 @@ public:
   // singularity diagnosis before the factorisation (slow: 10 to 15 times a supernodal
   // factorisation; without it, it runs only when the backend finds a null pivot).
   void factorize(const Eigen::SparseMatrix<double>& k, bool checkSingular, bool symmetric = true);
+  // Penalty terms in the next matrices, `ratio` times the structure's largest stiffness: null
+  // pivots are judged against the structure's stiffness (linalg::LinearSolver::setPenaltyRatio).
+  void setPenaltyRatio(double ratio) { penaltyRatio_ = ratio; }
 
   // Seconds spent so far (phase report of the log): building the bordered matrix, symbolic
   // analyses, numerical factorisations, solutions.
@@ -126,6 +129,7 @@ private:
   double scale_ = 1.0;
   linalg::SolverOptions options_;
   std::unique_ptr<linalg::LinearSolver> solver_;
+  double penaltyRatio_ = 1.0;
   linalg::SparseMatrix bordered_;                             // the matrix of the last factorisation
   std::uint64_t borderedFor_ = 0;                             // StiffnessMatrix::patternId() it was built for
   std::shared_ptr<const linalg::SparsePattern> analysed_;     // the pattern of the solver's analysis
