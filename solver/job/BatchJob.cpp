@@ -343,12 +343,12 @@ JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
       messDestination != spec.results.end() ? messDestination->second.parent_path() : spec.outputDirectory;
   sessionOptions.keptResultsStem = spec.stem;
   installStopHandlers();
-  if (spec.timeLimit > 0) {
-    armTimeLimit(spec.timeLimit);
-  }
+  clearStopRequest(); // a run in a process that ran another one (tests) starts afresh
+  armTimeLimit(spec.timeLimit);
 
   std::vector<const JobSpec::DataFile*> missing;
   std::unique_ptr<Session> session = runStudy(spec, work, mess, resuFile, sessionOptions, missing);
+  armTimeLimit(0); // the copy-back is not stopped
 
   SessionCounts counts;
   CopyOutcome copied;

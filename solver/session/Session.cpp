@@ -307,7 +307,6 @@ UserError Session::keepPartialResult(const UserError& e) {
     std::error_code ec;
     std::filesystem::remove(work, ec);
     const auto* user = dynamic_cast<const UserError*>(&failure);
-    written = "";
     std::vector<Diagnostic> ds = e.diagnostics();
     ds.front().withNote(fmt::format("the steps of {} could not be written to a MED file: {}", made->name,
                                     user != nullptr ? user->diagnostics().front().message : failure.what()));

@@ -18,7 +18,7 @@ enum class StopReason { None, Signal, TimeLimit };
 
 // Installs the handlers of SIGINT, SIGTERM and SIGALRM (once per process).
 void installStopHandlers();
-// Arms the time limit: a stop is requested after `seconds` of elapsed time (0: none).
+// Arms the time limit: a stop is requested after `seconds` of elapsed time (0: disarms it).
 void armTimeLimit(unsigned seconds);
 
 StopReason stopReason();
