@@ -93,6 +93,11 @@ unwritable() {
   check "message file unwritable: exit 3 (got $code)" test $code -eq 3
   check "message file unwritable: the MED result came back readable" readable out/m.rmed
   check "message file unwritable: standard error names unit 6 and the kept copy" grep -q "NOT copied back: unit 6.*fort.6" err.txt
+  # A work directory that cannot be made: a located error before the run, not terminate.
+  "$stella" run mess.export --quiet --work-dir plainfile/work >out.txt 2>err.txt; code=$?
+  check "work directory under a file: exit 3 (got $code)" test $code -eq 3
+  check "work directory under a file: RUN_6 with the path and the OS reason" \
+    grep -q "plainfile/work: Not a directory (ENOTDIR) \[RUN_6\]" err.txt
   if [ "$(id -u)" != 0 ]; then
     mkdir -p ro && chmod 555 ro
     printf 'F comm s.comm D 1\nF msh s.msh D 20\nF mess out/ro.mess R 6\nF rmed ro/r.rmed R 80\n' > ro.export
