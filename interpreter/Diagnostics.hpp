@@ -24,7 +24,8 @@ enum class FailureKind {
   Syntax,        // command language or catalogue validation: <F>_SYNTAX_ERROR
   Error,         // any other user error: <F>_ERROR
   NoConvergence, // <S>_NO_CONVERGENCE
-  Abort          // internal error: <F>_ABNORMAL_ABORT
+  Abort,         // internal error: <F>_ABNORMAL_ABORT
+  Interrupted    // a signal or the time limit stopped the run at a safe point: <S>_INTERRUPTED
 };
 
 struct Diagnostic {

@@ -3,7 +3,11 @@
 #include "solver/io/MedCommon.hpp"
 
 #include "solver/io/MeshFileError.hpp"
+#include "solver/session/ExceptionDiagnostic.hpp"
 
+#include <cerrno>
+
+#include <dlfcn.h>
 #include <fcntl.h>
 #include <hdf5.h>
 #include <unistd.h>
@@ -14,6 +18,7 @@
 #include <array>
 #include <mutex>
 #include <utility>
+#include <vector>
 
 namespace stella {
 
@@ -116,12 +121,73 @@ StderrSilencer::~StderrSilencer() {
   }
 }
 
-void silenceHdf5Errors() {
-  static std::once_flag once;
-  std::call_once(once, [] { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); });
+namespace {
+
+// The HDF5 library the MED library was linked with. Debian's libmedC uses the MPI build of
+// HDF5 while stella links the serial one: both are in the process, and a file MED opened lives
+// in MED's. Its functions are found through libmedC's dependencies.
+void* medHdf5Symbol(const char* name) {
+  static void* handle = [] {
+    Dl_info info{};
+    if (dladdr(reinterpret_cast<void*>(&MEDfileOpen), &info) == 0 || info.dli_fname == nullptr) {
+      return static_cast<void*>(nullptr);
+    }
+    return dlopen(info.dli_fname, RTLD_LAZY | RTLD_NOLOAD);
+  }();
+  return handle != nullptr ? dlsym(handle, name) : nullptr;
 }
 
-MedFile::MedFile(const std::filesystem::path& file, Mode mode) : path_(file) {
+template <typename F> F* medHdf5(const char* name) {
+  return reinterpret_cast<F*>(medHdf5Symbol(name));
+}
+
+// After a failed write or close (a full disk), HDF5 still holds the file and the objects MED
+// opened in it; its exit handlers would then crash closing them (HDF5 1.10, H5F__close_cb).
+// Every object MED opened in the file is closed here.
+void forceClose(med_idt fid) {
+  auto count = medHdf5<ssize_t(hid_t, unsigned)>("H5Fget_obj_count");
+  auto list = medHdf5<ssize_t(hid_t, unsigned, size_t, hid_t*)>("H5Fget_obj_ids");
+  auto type = medHdf5<H5I_type_t(hid_t)>("H5Iget_type");
+  auto decRef = medHdf5<int(hid_t)>("H5Idec_ref");
+  auto valid = medHdf5<htri_t(hid_t)>("H5Iis_valid");
+  if (count == nullptr || list == nullptr || type == nullptr || decRef == nullptr || valid == nullptr) {
+    return;
+  }
+  const ssize_t n = count(fid, H5F_OBJ_ALL | H5F_OBJ_LOCAL);
+  if (n > 0) {
+    std::vector<hid_t> ids(static_cast<std::size_t>(n));
+    const ssize_t got = list(fid, H5F_OBJ_ALL | H5F_OBJ_LOCAL, ids.size(), ids.data());
+    for (ssize_t i = 0; i < got; ++i) {
+      const hid_t id = ids[static_cast<std::size_t>(i)];
+      if (type(id) != H5I_FILE) {
+        while (valid(id) > 0 && decRef(id) >= 0) {
+        }
+      }
+    }
+  }
+  // The file itself is not closed again: HDF5 1.10 crashes closing a file whose flush failed.
+  // It stays open, unflushed, until the process ends (no exit handler touches it, see
+  // silenceHdf5Errors); its temporary name is removed by the writer.
+  static_cast<void>(fid);
+}
+
+} // namespace
+
+void silenceHdf5Errors() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    // HDF5's exit handlers close the files still open, and crash on one whose write failed (a
+    // full disk: HDF5 1.10, H5F__close_cb). stella closes every file itself (MedFile), so the
+    // handlers are not installed; this must come before any other HDF5 call.
+    if (auto dontAtExit = medHdf5<herr_t()>("H5dont_atexit")) {
+      dontAtExit();
+    }
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  });
+}
+
+MedFile::MedFile(const std::filesystem::path& file, Mode mode, std::filesystem::path shown)
+    : path_(file), shown_(shown.empty() ? file : std::move(shown)), mode_(mode) {
   silenceHdf5Errors();
   const std::string p = file.string();
   std::error_code ec;
@@ -149,24 +215,55 @@ MedFile::MedFile(const std::filesystem::path& file, Mode mode) : path_(file) {
   const med_access_mode access = mode == Mode::Read     ? MED_ACC_RDONLY
                                  : mode == Mode::Create ? MED_ACC_CREAT
                                                         : MED_ACC_RDWR;
+  errno = 0;
   fid_ = MEDfileOpen(p.c_str(), access);
   if (fid_ < 0) {
-    throwFileError(mode == Mode::Read ? "MESHFILE_4" : "MESHFILE_7", file,
-                   mode == Mode::Read ? "the MED library cannot open the file"
-                                      : "the file cannot be created");
+    if (mode == Mode::Read) {
+      throwFileError("MESHFILE_4", shown_, "the MED library cannot open the file");
+    }
+    mode_ = mode;
+    check(-1, "MEDfileOpen", "creating the file");
   }
 }
 
 MedFile::~MedFile() {
-  if (fid_ >= 0) {
-    MEDfileClose(fid_);
+  if (fid_ >= 0 && MEDfileClose(fid_) < 0) {
+    forceClose(fid_);
   }
 }
 
-void MedFile::check(med_err status, const char* call, const std::string& context) const {
-  if (status < 0) {
-    throwFileError("MESHFILE_4", path_, std::string(call) + " failed (" + context + "): damaged file?");
+void MedFile::close() {
+  if (fid_ < 0) {
+    return;
   }
+  errno = 0;
+  const med_err status = MEDfileClose(fid_);
+  if (status < 0) {
+    const int error = errno;
+    forceClose(fid_);
+    errno = error;
+  }
+  fid_ = -1;
+  check(status, "MEDfileClose", "writing what the file still held");
+}
+
+void MedFile::check(med_err status, const char* call, const std::string& context) const {
+  const int error = errno;
+  if (status >= 0) {
+    errno = 0; // a later failure reads only its own reason
+    return;
+  }
+  if (mode_ == Mode::Read) {
+    throwFileError("MESHFILE_4", shown_, std::string(call) + " failed (" + context + "): damaged file?");
+  }
+  const bool osError = error == ENOSPC || error == EFBIG || error == EDQUOT || error == EIO ||
+                       error == EROFS || error == EACCES || error == EPERM || error == ENOENT ||
+                       error == ENOTDIR || error == EISDIR;
+  throw UserError(
+      Diagnostic::fatal("MESHFILE_7", "cannot write the MED file '" + shown_.string() + "': " + call +
+                                          " failed (" + context + "): " +
+                                          (osError ? osReason(error) : "the MED library gives no OS reason"))
+          .withNote(osError ? osAdvice(error) : "check the space left and the file-size limit (ulimit -f)"));
 }
 
 std::string medName(const char* field, std::size_t width) {

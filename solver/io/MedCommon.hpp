@@ -35,17 +35,25 @@ const std::vector<CellType>& medCellOrder();
 class MedFile {
 public:
   enum class Mode { Read, Create, Append };
-  MedFile(const std::filesystem::path& file, Mode mode);
+  // `shown`: the path the messages give (a file written under a temporary name is named by its
+  // final one); empty: `file`.
+  MedFile(const std::filesystem::path& file, Mode mode, std::filesystem::path shown = {});
   ~MedFile();
   MedFile(const MedFile&) = delete;
   MedFile& operator=(const MedFile&) = delete;
   med_idt id() const { return fid_; }
   const std::filesystem::path& path() const { return path_; }
-  // MESHFILE_4 "<call> failed (<context>)" when status < 0.
+  // MESHFILE_4 "<call> failed (<context>)" when status < 0; for a file being written,
+  // MESHFILE_7 with the OS reason (a full disk, the file-size limit...).
   void check(med_err status, const char* call, const std::string& context) const;
+  // Closes the file, checked: HDF5 writes what it still holds here, so a full disk can show
+  // only now. The destructor closes a file still open without a word (after an error).
+  void close();
 
 private:
   std::filesystem::path path_;
+  std::filesystem::path shown_;
+  Mode mode_;
   med_idt fid_ = -1;
 };
 

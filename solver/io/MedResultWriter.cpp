@@ -7,7 +7,9 @@
 #include "solver/io/MedMeshWriterDetail.hpp"
 #include "solver/io/MeshFileError.hpp"
 #include "solver/io/ResultWriters.hpp"
+#include "solver/job/CopyBack.hpp"
 #include "solver/mesh/CellTopology.hpp"
+#include "solver/session/ExceptionDiagnostic.hpp"
 
 #include <algorithm>
 #include <map>
@@ -284,10 +286,10 @@ std::string medFieldName(const std::string& resultName, const std::string& field
   return prefix + field;
 }
 
-void writeMedResult(const std::filesystem::path& file, const Mesh& mesh, const std::string& meshName,
-                    const Result* result, const ResultOutput& output, bool append) {
-  const StderrSilencer quiet;
-  const MedFile f(file, append ? MedFile::Mode::Append : MedFile::Mode::Create);
+namespace {
+
+void writeInto(const MedFile& f, const Mesh& mesh, const std::string& meshName, const Result* result,
+               const ResultOutput& output, bool append) {
   const std::string name = !meshName.empty() ? meshName : (!mesh.name().empty() ? mesh.name() : "MAIL");
   if (!append || !meshInFile(f, name)) {
     writeMedMeshInto(f, mesh, name);
@@ -309,6 +311,68 @@ void writeMedResult(const std::filesystem::path& file, const Mesh& mesh, const s
       writer.write(medName, *field, *s);
     }
   }
+}
+
+// A file written under a temporary name beside it, renamed only when complete: a write that
+// fails (a full disk, the file-size limit) leaves the file as it was before the call.
+class PartialFile {
+public:
+  PartialFile(const std::filesystem::path& file, bool append)
+      : file_(file), partial_(file.string() + ".writing") {
+    std::error_code ec;
+    std::filesystem::remove(partial_, ec);
+    if (append && std::filesystem::exists(file_, ec)) {
+      if (auto reason = copyResultFile(file_, partial_)) {
+        std::filesystem::remove(partial_, ec);
+        throw UserError(
+            Diagnostic::fatal("MESHFILE_7", "cannot write the MED file '" + file_.string() + "': " + *reason)
+                .withNote("the file keeps what the earlier IMPR_RESU calls wrote"));
+      }
+    }
+  }
+  ~PartialFile() {
+    std::error_code ec;
+    std::filesystem::remove(partial_, ec); // left only after a failure
+  }
+  PartialFile(const PartialFile&) = delete;
+  PartialFile& operator=(const PartialFile&) = delete;
+  const std::filesystem::path& path() const { return partial_; }
+  void commit() const {
+    std::error_code ec;
+    std::filesystem::rename(partial_, file_, ec);
+    if (ec) {
+      throw UserError(Diagnostic::fatal("MESHFILE_7", "cannot write the MED file '" + file_.string() +
+                                                          "': renaming " + partial_.filename().string() +
+                                                          " failed: " + osReason(ec.value())));
+    }
+  }
+
+private:
+  std::filesystem::path file_;
+  std::filesystem::path partial_;
+};
+
+} // namespace
+
+void writeMedResult(const std::filesystem::path& file, const Mesh& mesh, const std::string& meshName,
+                    const Result* result, const ResultOutput& output, bool append) {
+  const StderrSilencer quiet;
+  const PartialFile partial(file, append);
+  try {
+    MedFile f(partial.path(), append ? MedFile::Mode::Append : MedFile::Mode::Create, file);
+    writeInto(f, mesh, meshName, result, output, append);
+    f.close();
+  } catch (UserError& e) {
+    std::vector<Diagnostic> ds = e.diagnostics();
+    std::error_code ec;
+    ds.front().withNote(
+        std::filesystem::exists(file, ec)
+            ? "nothing of this call was written: the file keeps what the earlier IMPR_RESU calls "
+              "wrote, readable"
+            : "the incomplete file was removed: no MED file is announced as written");
+    throw UserError(std::move(ds));
+  }
+  partial.commit();
 }
 
 } // namespace stella

@@ -1,15 +1,20 @@
 #include "BatchJob.hpp"
 
+#include "CopyBack.hpp"
 #include "TeeStream.hpp"
 #include "catalog/Catalog.hpp"
 #include "interpreter/Interpreter.hpp"
+#include "solver/session/ExceptionDiagnostic.hpp"
 #include "solver/session/Session.hpp"
+#include "solver/session/StopRequest.hpp"
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <ctime>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -37,6 +42,9 @@ struct JobSpec {
   std::vector<std::string> expectedDiagnostics;
   bool saveBase = false;
   bool resultsOptional = false; // quick runs: say nothing of result units the study did not write
+  fs::path outputDirectory;     // where the steps of a failed command are copied back
+  std::string stem;             // of the export or command file: <stem>.<RESULT>.incomplete.rmed
+  unsigned timeLimit = 0;       // P time_limit, seconds (0: none)
 };
 
 constexpr const char* workMarker = ".stella-work";
@@ -113,12 +121,23 @@ void writeTimingSummary(std::ostream& mess, const Session& session) {
   mess << fmt::format("  {:<5} {:<22} {:<40} {:>10.3f}\n", "", "total", "", total);
 }
 
-// Copies the result units back; returns the files written.
+// A result file that could not be copied back: named, with the reason, in the message file.
+struct CopyFailure {
+  int unit;
+  fs::path source; // in the work directory
+  fs::path destination;
+  std::string reason;
+};
+
+struct CopyOutcome {
+  std::vector<fs::path> written;
+  std::vector<CopyFailure> failed;
+};
+
 // Files a writer puts beside a unit (the .vtu of each step next to the .pvd of unit 81 are
 // fort.81_<k>.vtu): copied next to the result as <result stem>_<k>.vtu, and the unit's file, which
 // names them, rewritten to match.
-void copyCompanions(const fs::path& work, int unit, const fs::path& destination,
-                    std::vector<fs::path>& written) {
+void copyCompanions(const fs::path& work, int unit, const fs::path& destination, CopyOutcome& outcome) {
   const std::string prefix = fmt::format("fort.{}_", unit);
   const std::string stem = destination.stem().string() + "_";
   bool any = false;
@@ -128,8 +147,11 @@ void copyCompanions(const fs::path& work, int unit, const fs::path& destination,
       continue;
     }
     const fs::path target = destination.parent_path() / (stem + name.substr(prefix.size()));
-    fs::copy_file(entry.path(), target, fs::copy_options::overwrite_existing);
-    written.push_back(target);
+    if (auto reason = copyResultFile(entry.path(), target)) {
+      outcome.failed.push_back({unit, entry.path(), target, *reason});
+      continue;
+    }
+    outcome.written.push_back(target);
     any = true;
   }
   if (!any) {
@@ -148,8 +170,10 @@ void copyCompanions(const fs::path& work, int unit, const fs::path& destination,
   std::ofstream(destination, std::ios::binary) << text;
 }
 
-std::vector<fs::path> copyResults(const JobSpec& spec, const fs::path& work, std::ostream& mess) {
-  std::vector<fs::path> written;
+// Copies the result units back, each file on its own: one that cannot be copied is recorded with
+// its reason and the others still come back.
+CopyOutcome copyResults(const JobSpec& spec, const fs::path& work, bool stopped, std::ostream& mess) {
+  CopyOutcome outcome;
   for (const auto& [unit, destination] : spec.results) {
     if (unit == 6 || unit == 8) {
       continue; // still open: copied when the run is over
@@ -159,33 +183,66 @@ std::vector<fs::path> copyResults(const JobSpec& spec, const fs::path& work, std
       if (spec.resultsOptional) {
         continue;
       }
-      mess << fmt::format("  unit {} ({}) was not written by the study\n", unit, destination.string());
+      mess << (stopped
+                   ? fmt::format("  unit {} ({}) was not written: the run stopped before the command that "
+                                 "writes it\n",
+                                 unit, destination.string())
+                   : fmt::format("  unit {} ({}) was not written by the study\n", unit,
+                                 destination.string()));
       continue;
     }
-    fs::create_directories(destination.parent_path());
-    fs::copy_file(produced, destination, fs::copy_options::overwrite_existing);
-    written.push_back(destination);
-    copyCompanions(work, unit, destination, written);
+    if (auto reason = copyResultFile(produced, destination)) {
+      outcome.failed.push_back({unit, produced, destination, *reason});
+      continue;
+    }
+    outcome.written.push_back(destination);
+    copyCompanions(work, unit, destination, outcome);
   }
-  return written;
+  return outcome;
 }
 
-JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
-  JobResult job;
-  fs::path work = makeWorkDirectory(options);
-  job.workDirectory = work;
+// The MED files of the steps of failed commands (Session::keepPartialResult).
+void copyKeptFiles(const Session& session, CopyOutcome& outcome) {
+  for (const KeptFile& kept : session.keptFiles()) {
+    if (auto reason = copyResultFile(kept.work, kept.destination)) {
+      outcome.failed.push_back({0, kept.work, kept.destination, *reason});
+      continue;
+    }
+    outcome.written.push_back(kept.destination);
+  }
+}
 
-  std::ofstream messFile(work / "fort.6");
-  std::ofstream resuFile(work / "fort.8");
-  TeeBuffer tee(messFile.rdbuf(), options.echo ? std::cout.rdbuf() : nullptr);
-  std::ostream mess(&tee);
-  writeHeader(mess, options, work);
+// The message and result files (units 6 and 8) are copied when the run is over; a first copy of
+// what they hold so far finds a destination that cannot be written while the message file can
+// still say so.
+void probeOpenUnits(const JobSpec& spec, const fs::path& work, CopyOutcome& outcome) {
+  for (int unit : {6, 8}) {
+    auto it = spec.results.find(unit);
+    if (it == spec.results.end()) {
+      continue;
+    }
+    const fs::path produced = work / ("fort." + std::to_string(unit));
+    if (auto reason = copyResultFile(produced, it->second)) {
+      outcome.failed.push_back({unit, produced, it->second, *reason});
+    }
+  }
+}
 
-  SessionOptions sessionOptions;
-  sessionOptions.referenceOnly = options.referenceOnly;
-  sessionOptions.workDirectory = work;
+Diagnostic copyFailure(const CopyFailure& f, const fs::path& work) {
+  const std::string kept = f.source.filename().string();
+  const std::string what = f.unit != 0 ? fmt::format("the result file of unit {}", f.unit)
+                                       : "the MED file of the steps of the failed command";
+  return Diagnostic::fatal("RUN_5", fmt::format("{} could not be copied back: {}", what, f.reason))
+      .withNote(fmt::format("its content is kept in the work directory {} (file {}); the other result "
+                            "files were copied back",
+                            work.string(), kept))
+      .withNote("give a destination that can be written (a file name in a writable folder with space "
+                "left) in the export");
+}
 
-  std::vector<const JobSpec::DataFile*> missing;
+// The data files of the export copied to their units; returns the paths of the units.
+std::map<int, fs::path> copyData(const JobSpec& spec, const fs::path& work,
+                                 std::vector<const JobSpec::DataFile*>& missing) {
   std::map<int, fs::path> unitPaths;
   for (const auto& d : spec.data) {
     fs::path target = work / ("fort." + std::to_string(d.unit));
@@ -200,10 +257,23 @@ JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
     }
     unitPaths[d.unit] = target;
   }
+  return unitPaths;
+}
 
+// Runs the command files in one session; every exception ends as a framed diagnostic.
+std::unique_ptr<Session> runStudy(const JobSpec& spec, const fs::path& work, std::ostream& mess,
+                                  std::ostream& resuFile, const SessionOptions& sessionOptions,
+                                  std::vector<const JobSpec::DataFile*>& missing) {
   std::unique_ptr<Session> session;
-  bool internalFailure = false;
+  auto report = [&](const Diagnostic& d) {
+    if (session) {
+      session->report(d);
+    } else {
+      mess << formatDiagnostic(d);
+    }
+  };
   try {
+    const std::map<int, fs::path> unitPaths = copyData(spec, work, missing);
     const Catalog& catalog = Catalog::builtin();
     session = std::make_unique<Session>(catalog, mess, resuFile, sessionOptions);
     for (const auto& [unit, path] : unitPaths) {
@@ -224,48 +294,89 @@ JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
       }
     }
   } catch (const UserError& e) {
-    if (session) {
-      for (const auto& d : e.diagnostics()) {
-        session->report(d);
-      }
-    } else {
-      for (const auto& d : e.diagnostics()) {
-        mess << formatDiagnostic(d);
-      }
+    for (const auto& d : e.diagnostics()) {
+      report(d);
     }
   } catch (const std::exception& e) {
-    mess << " ! <F> <INTERNAL_2> internal error in stella: " << e.what() << "\n"
-         << "   this is a bug in stella, not in your study: please report it with the command file\n";
-    internalFailure = true;
+    report(diagnosticOf(e, "running the study"));
   }
+  return session;
+}
+
+// What the session says at the end: missing data, the base, the timings, what was kept.
+void closeSession(Session& session, const JobSpec& spec, const std::vector<const JobSpec::DataFile*>& missing,
+                  std::ostream& mess) {
+  for (const auto* d : missing) {
+    const auto& opened = session.openedUnits();
+    if (std::find(opened.begin(), opened.end(), d->unit) == opened.end()) {
+      session.report(
+          Diagnostic::alarm("RUN_2", fmt::format("the data file {} declared for unit {} ({}) does not "
+                                                 "exist; the study never opened it",
+                                                 d->source.string(), d->unit, d->origin)));
+    }
+  }
+  if (spec.saveBase) {
+    session.report(Diagnostic::alarm("RUN_3",
+                                     "saving the concept database (R base) is not implemented yet; the "
+                                     "other result files are written"));
+  }
+  writeTimingSummary(mess, session);
+}
+
+JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
+  JobResult job;
+  fs::path work = makeWorkDirectory(options);
+  job.workDirectory = work;
+
+  std::ofstream messFile(work / "fort.6");
+  std::ofstream resuFile(work / "fort.8");
+  TeeBuffer tee(messFile.rdbuf(), options.echo ? std::cout.rdbuf() : nullptr);
+  std::ostream mess(&tee);
+  writeHeader(mess, options, work);
+
+  SessionOptions sessionOptions;
+  sessionOptions.referenceOnly = options.referenceOnly;
+  sessionOptions.workDirectory = work;
+  // The steps of a failed command go beside the message file, where the user looks first.
+  const auto messDestination = spec.results.find(6);
+  sessionOptions.keptResultsDirectory =
+      messDestination != spec.results.end() ? messDestination->second.parent_path() : spec.outputDirectory;
+  sessionOptions.keptResultsStem = spec.stem;
+  installStopHandlers();
+  clearStopRequest(); // a run in a process that ran another one (tests) starts afresh
+  armTimeLimit(spec.timeLimit);
+
+  std::vector<const JobSpec::DataFile*> missing;
+  std::unique_ptr<Session> session = runStudy(spec, work, mess, resuFile, sessionOptions, missing);
+  armTimeLimit(0); // the copy-back is not stopped
 
   SessionCounts counts;
+  CopyOutcome copied;
   if (session) {
-    if (internalFailure) {
-      session->noteFailure(FailureKind::Abort);
+    try {
+      closeSession(*session, spec, missing, mess);
+      mess << "\n";
+      copied = copyResults(spec, work, session->counts().failure != FailureKind::None, mess);
+      copyKeptFiles(*session, copied);
+      probeOpenUnits(spec, work, copied);
+    } catch (const std::exception& e) {
+      session->report(diagnosticOf(e, "copying the result files back"));
     }
-    for (const auto* d : missing) {
-      const auto& opened = session->openedUnits();
-      if (std::find(opened.begin(), opened.end(), d->unit) == opened.end()) {
-        session->report(
-            Diagnostic::alarm("RUN_2", fmt::format("the data file {} declared for unit {} ({}) does not "
-                                                   "exist; the study never opened it",
-                                                   d->source.string(), d->unit, d->origin)));
-      }
+    for (const auto& f : copied.failed) {
+      session->report(copyFailure(f, work));
     }
-    if (spec.saveBase) {
-      session->report(Diagnostic::alarm("RUN_3",
-                                        "saving the concept database (R base) is not implemented yet; the "
-                                        "other result files are written"));
-    }
-    writeTimingSummary(mess, *session);
     counts = session->counts();
     if (counts.failure != FailureKind::None) {
-      mess << "\n  The run stopped on an error. Every result computed before it is kept";
+      mess << (counts.failure == FailureKind::Interrupted
+                   ? "\n  The run was stopped. Every result computed before it is kept"
+                   : "\n  The run ended on an error. Every result computed before it is kept");
       for (const auto& kept : session->keptResults()) {
         mess << "\n    " << kept;
       }
-      mess << "\n  and the result files declared for the run are copied back.\n";
+      mess << (copied.failed.empty()
+                   ? "\n  and the result files declared for the run are copied back.\n"
+                   : "\n  and the result files declared for the run are copied back, except "
+                     "those named above.\n");
     }
   } else {
     counts.failure = FailureKind::Abort;
@@ -275,29 +386,59 @@ JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
   diagnostic = applyExpected(diagnostic, spec.expectedDiagnostics);
   job.diagnostic = diagnostic;
 
-  mess << "\n";
-  std::vector<fs::path> written = copyResults(spec, work, mess);
+  if (exitCode(diagnostic) != 0 || options.keepWorkDirectory || !options.workDirectory.empty()) {
+    mess << "\n  The work directory is kept: " << work.string() << "\n";
+  }
   mess << "\n" << diagnosticFrame(diagnostic);
   mess.flush();
   messFile.close();
   resuFile.close();
   // The message and result files are complete only now.
+  std::vector<fs::path> written = copied.written;
   for (int unit : {6, 8}) {
     auto it = spec.results.find(unit);
-    if (it != spec.results.end()) {
-      fs::create_directories(it->second.parent_path());
-      fs::copy_file(work / ("fort." + std::to_string(unit)), it->second,
-                    fs::copy_options::overwrite_existing);
-      written.push_back(it->second);
+    if (it == spec.results.end()) {
+      continue;
+    }
+    if (auto reason = copyResultFile(work / ("fort." + std::to_string(unit)), it->second)) {
+      job.copyFailures.push_back(
+          fmt::format("unit {}: {} (kept in {} as fort.{})", unit, *reason, work.string(), unit));
+      continue;
+    }
+    written.push_back(it->second);
+  }
+  for (const auto& f : copied.failed) {
+    if (f.unit != 6 && f.unit != 8) {
+      job.copyFailures.push_back(fmt::format("unit {}: {} (kept in {} as {})", f.unit, f.reason,
+                                             work.string(), f.source.filename().string()));
     }
   }
   job.resultFiles = written;
-  bool failed = exitCode(diagnostic) != 0;
+  bool failed = exitCode(diagnostic) != 0 || !job.copyFailures.empty();
   if (!options.keepWorkDirectory && !failed && options.workDirectory.empty()) {
-    fs::remove_all(work);
+    std::error_code ec;
+    fs::remove_all(work, ec);
     job.workDirectory.clear();
   }
   return job;
+}
+
+// P time_limit <seconds>: the run stops at the next safe point once it has run that long.
+unsigned timeLimitOf(const Export& study) {
+  if (!study.hasParameter("time_limit")) {
+    return 0;
+  }
+  const std::vector<std::string> words = study.parameter("time_limit");
+  char* end = nullptr;
+  const double seconds = words.size() == 1 ? std::strtod(words.front().c_str(), &end) : -1.0;
+  if (words.size() != 1 || end == words.front().c_str() || *end != '\0' || !(seconds > 0.0) ||
+      seconds > 1.0e9) {
+    throw UserError(
+        Diagnostic::fatal("EXPORT_9", "P time_limit expects one positive number of seconds, got '" +
+                                          fmt::format("{}", fmt::join(words, " ")) + "'")
+            .withNote(study.file.string() + ": write e.g. P time_limit 3600"));
+  }
+  return static_cast<unsigned>(std::ceil(seconds));
 }
 
 } // namespace
@@ -323,6 +464,9 @@ JobResult runExport(const Export& study, const RunOptions& options) {
       spec.results[e.unit] = p.is_absolute() ? p : (outputBase / p).lexically_normal();
     }
   }
+  spec.outputDirectory = outputBase;
+  spec.stem = study.file.stem().string();
+  spec.timeLimit = timeLimitOf(study);
   spec.isTestcase = study.hasParameter("testlist");
   spec.expectedDiagnostics = study.parameter("expected_diag");
   return runSpec(spec, options);
@@ -343,6 +487,8 @@ JobResult runCommandFile(const fs::path& commandFile, const std::map<int, fs::pa
   spec.results[80] = outputBase / (stem + ".rmed");
   spec.results[81] = outputBase / (stem + ".pvd"); // IMPR_RESU FORMAT='VTU', its .vtu beside it
   spec.resultsOptional = true;
+  spec.outputDirectory = outputBase;
+  spec.stem = stem;
   return runSpec(spec, options);
 }
 

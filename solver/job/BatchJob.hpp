@@ -26,6 +26,7 @@ struct JobResult {
   JobDiagnostic diagnostic = JobDiagnostic::AbnormalAbort;
   std::vector<std::filesystem::path> resultFiles; // copied back
   std::filesystem::path workDirectory;            // kept when the run failed
+  std::vector<std::string> copyFailures;          // result files that could not be copied back, why
 };
 
 JobResult runExport(const Export& study, const RunOptions& options);

@@ -1,6 +1,7 @@
 #include "JobDiagnostic.hpp"
 
 #include "solver/session/Session.hpp"
+#include "solver/session/StopRequest.hpp"
 
 #include <algorithm>
 
@@ -16,6 +17,8 @@ JobDiagnostic diagnose(const SessionCounts& counts, bool isTestcase) {
     return JobDiagnostic::NoConvergence;
   case FailureKind::Abort:
     return JobDiagnostic::AbnormalAbort;
+  case FailureKind::Interrupted:
+    return stopReason() == StopReason::TimeLimit ? JobDiagnostic::TimeLimit : JobDiagnostic::Interrupted;
   case FailureKind::None:
     break;
   }
@@ -58,6 +61,10 @@ const char* diagnosticWord(JobDiagnostic d) {
     return "<S>_NO_CONVERGENCE";
   case JobDiagnostic::AbnormalAbort:
     return "<F>_ABNORMAL_ABORT";
+  case JobDiagnostic::Interrupted:
+    return "<S>_INTERRUPTED";
+  case JobDiagnostic::TimeLimit:
+    return "<S>_CPU_LIMIT";
   }
   return "<F>_ABNORMAL_ABORT";
 }
@@ -78,6 +85,10 @@ int exitCode(JobDiagnostic d) {
     return 4;
   case JobDiagnostic::AbnormalAbort:
     return 5;
+  case JobDiagnostic::Interrupted:
+    return 6;
+  case JobDiagnostic::TimeLimit:
+    return 7;
   }
   return 5;
 }

@@ -19,7 +19,9 @@ enum class JobDiagnostic {
   SyntaxError,   // <F>_SYNTAX_ERROR
   Error,         // <F>_ERROR
   NoConvergence, // <S>_NO_CONVERGENCE
-  AbnormalAbort  // <F>_ABNORMAL_ABORT
+  AbnormalAbort, // <F>_ABNORMAL_ABORT
+  Interrupted,   // <S>_INTERRUPTED (a signal)
+  TimeLimit      // <S>_CPU_LIMIT (P time_limit)
 };
 
 // `isTestcase`: the export has a `P testlist` line (a test case must print OK/NOOK lines).

@@ -11,6 +11,7 @@
 #include "solver/fem/Quadrature.hpp"
 #include "solver/io/MeshIO.hpp"
 #include "solver/io/ResultWriters.hpp"
+#include "solver/io/RigiPoints.hpp"
 #include "solver/operators/MeshOperatorUtil.hpp"
 #include "solver/session/Session.hpp"
 
@@ -20,24 +21,6 @@
 namespace stella {
 
 namespace {
-
-std::vector<Point3> rigiPoints(CellType t, int count) {
-  for (const auto role : {fem::IntegrationRole::Volume, fem::IntegrationRole::Skin}) {
-    try {
-      const auto& rule = fem::rigiRule(t, role);
-      if (rule.size() == count) {
-        std::vector<Point3> p;
-        for (const auto& x : rule.points) {
-          p.push_back({x[0], x[1], x[2]});
-        }
-        return p;
-      }
-    } catch (const std::exception&) {
-      // No rule of this role for this type: try the next one.
-    }
-  }
-  return {};
-}
 
 std::vector<int> selectedSteps(const Result& r, const KeywordTree& occ) {
   std::vector<int> numbers;
@@ -160,7 +143,7 @@ void writeOccurrence(OperatorCall& call, const Target& target, const KeywordTree
       }
     }
   }
-  out.gaussPoints = rigiPoints;
+  out.gaussPoints = rigiGaussPoints;
   restrictToGroups(call, target, occ, *mesh, out);
   const Result* r = result.get();
   if (target.format == "MED") {

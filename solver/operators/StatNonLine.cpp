@@ -29,6 +29,7 @@
 #include "solver/nonlinear/StepMeasures.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
+#include "solver/session/StopRequest.hpp"
 
 #include <chrono>
 #include <fmt/format.h>
@@ -229,6 +230,16 @@ Value runStatNonLine(OperatorCall& call) {
           observe(observations, c.index, s, system, constraint.get());
           msg.flush();
           progress.show(c.time, c.index, c.cuts);
+          if (stopRequested()) { // the safe point of a signal or the time limit: this step converged
+            if (!lastStored) {
+              store(*result, s, system, constraint.get(), c.outcome.iterations);
+            }
+            progress.erase();
+            throw UserError(
+                stopDiagnostic(fmt::format("at INST {:g}: steps kept up to INST {:g} (NUME_ORDRE {})", c.time,
+                                           result->steps.back().time, result->steps.back().number),
+                               call.location));
+          }
           measures.startStep(system);
         });
   } catch (const UserError&) {

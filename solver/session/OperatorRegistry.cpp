@@ -1,5 +1,7 @@
 #include "OperatorRegistry.hpp"
 
+#include "Session.hpp"
+
 #include "interpreter/Diagnostics.hpp"
 
 namespace stella {
@@ -34,6 +36,7 @@ std::vector<std::string> OperatorRegistry::names() const {
 Value OperatorCall::makeConcept(std::shared_ptr<ConceptData> data) const {
   if (reused) {
     reused->data = std::move(data);
+    session.noteConceptInProgress(reused);
     return Value(reused);
   }
   auto c = std::make_shared<Concept>();
@@ -41,6 +44,7 @@ Value OperatorCall::makeConcept(std::shared_ptr<ConceptData> data) const {
   c->type = resultType;
   c->data = std::move(data);
   c->definedAt = location;
+  session.noteConceptInProgress(c);
   return Value(c);
 }
 

@@ -3,8 +3,13 @@
 #include "ConceptMethods.hpp"
 #include "OperatorRegistry.hpp"
 #include "catalog/Catalog.hpp"
+#include "solver/database/Result.hpp"
 #include "interpreter/Suggest.hpp"
 #include "solver/functions/RealFunction.hpp"
+#include "solver/io/ResultWriters.hpp"
+#include "solver/io/RigiPoints.hpp"
+#include "solver/session/ExceptionDiagnostic.hpp"
+#include "solver/session/StopRequest.hpp"
 
 #include <algorithm>
 #include <optional>
@@ -209,6 +214,9 @@ Value Session::callCommand(const std::string& command, const CallArguments& args
                                   "run it yet"));
   }
 
+  if (stopRequested() && (options_.executeOperators || runsWhenChecking(command))) {
+    throw UserError(stopDiagnostic("before " + command, args.callLocation));
+  }
   ++commandCount_;
   const std::string location = args.callLocation.str();
   message_ << "\n  # " << std::string(70, '-') << "\n"
@@ -226,20 +234,7 @@ Value Session::callCommand(const std::string& command, const CallArguments& args
     const std::string resultName = call.reused ? call.reused->name : target;
     OperatorCall opCall{*this,           command,     call.keywords,    resultName,
                         call.resultType, call.reused, args.callLocation};
-    try {
-      result = op(opCall);
-    } catch (const UserError& e) {
-      throw withUserPaths(e);
-    } catch (const InternalError& e) {
-      throw UserError(Diagnostic::fatal("INTERNAL_1", "internal error in stella while running " + command,
-                                        args.callLocation)
-                          .withNote(e.what())
-                          .withNote("this is a bug in stella, not in your study: please report it with the "
-                                    "command file"));
-    } catch (const std::bad_alloc&) {
-      throw UserError(Diagnostic::fatal("MEMORY_1", "not enough memory to run " + command, args.callLocation)
-                          .withNote("use a coarser mesh or a machine with more memory"));
-    }
+    result = runOperator(op, opCall);
   } else if (!call.resultType.empty()) {
     auto c = std::make_shared<Concept>();
     c->name = call.reused ? call.reused->name : target;
@@ -266,6 +261,78 @@ Value Session::callCommand(const std::string& command, const CallArguments& args
                           cpu, wall)
            << std::flush;
   return result;
+}
+
+// Runs an operator; every exception it lets out becomes a located diagnostic, and the steps of
+// a result it had started are written to a MED file.
+Value Session::runOperator(Value (*op)(OperatorCall&), OperatorCall& opCall) {
+  inProgress_.reset();
+  const std::string& command = opCall.command;
+  const SourceLocation& at = opCall.location;
+  try {
+    return op(opCall);
+  } catch (const UserError& e) {
+    throw keepPartialResult(withUserPaths(e));
+  } catch (const InternalError& e) {
+    throw keepPartialResult(
+        UserError(Diagnostic::fatal("INTERNAL_1", "internal error in stella while running " + command, at)
+                      .withNote(e.what())
+                      .withNote("this is a bug in stella, not in your study: please report it with the "
+                                "command file")));
+  } catch (const std::exception& e) {
+    throw keepPartialResult(UserError(diagnosticOf(e, "running " + command, at)));
+  }
+}
+
+// The steps of the result the failed command had started reach the disk: a MED file in the work
+// directory, copied back beside the results, named in the diagnostics.
+UserError Session::keepPartialResult(const UserError& e) {
+  std::shared_ptr<Concept> made = std::move(inProgress_);
+  inProgress_.reset();
+  auto result = made ? std::dynamic_pointer_cast<const Result>(made->data) : nullptr;
+  if (!result || result->steps.empty() || result->mesh == nullptr || options_.keptResultsDirectory.empty()) {
+    return e;
+  }
+  const std::string name = fmt::format("{}.{}.incomplete.rmed", options_.keptResultsStem, made->name);
+  const std::filesystem::path work = options_.workDirectory / name;
+  const std::filesystem::path destination = options_.keptResultsDirectory / name;
+  std::string written;
+  try {
+    ResultOutput out;
+    out.resultName = made->name;
+    out.gaussPoints = rigiGaussPoints;
+    std::filesystem::remove(work);
+    writeMedResult(work, *result->mesh, result->mesh->name(), result.get(), out, false);
+    keptFiles_.push_back({work, destination});
+    written = destination.string();
+  } catch (const std::exception& failure) {
+    std::error_code ec;
+    std::filesystem::remove(work, ec);
+    const auto* user = dynamic_cast<const UserError*>(&failure);
+    std::vector<Diagnostic> ds = e.diagnostics();
+    ds.front().withNote(fmt::format("the steps of {} could not be written to a MED file: {}", made->name,
+                                    user != nullptr ? user->diagnostics().front().message : failure.what()));
+    return UserError(std::move(ds));
+  }
+  const ResultStep& last = result->steps.back();
+  std::vector<Diagnostic> ds = e.diagnostics();
+  for (auto& d : ds) {
+    if (d.severity == Severity::Alarm || d.severity == Severity::Info) {
+      continue;
+    }
+    if (d.kind == FailureKind::Interrupted) {
+      d.message += ", written to " + written;
+    } else {
+      d.withNote(
+          fmt::format("the {} step(s) of {} computed before the error (up to INST {:g}, NUME_ORDRE {}) "
+                      "are written to {} (MED, copied back with the result files)",
+                      result->steps.size(), made->name, last.time, last.number, written));
+    }
+    break;
+  }
+  noteKeptResult(fmt::format("{}: {} step(s) up to INST {:g} in {}", made->name, result->steps.size(),
+                             last.time, written));
+  return UserError(std::move(ds));
 }
 
 Value Session::conceptAttribute(const std::shared_ptr<Concept>& object, const std::string& name,

@@ -18,6 +18,8 @@
 
 namespace stella {
 
+struct OperatorCall;
+
 class Catalog;
 
 struct SessionOptions {
@@ -28,6 +30,17 @@ struct SessionOptions {
   bool executeOperators = true;
   bool referenceOnly = false; // --reference-only: VALE_CALC lines are information
   std::filesystem::path workDirectory = ".";
+  // Where the steps of a result whose command failed are copied back, as
+  // <keptResultsDirectory>/<keptResultsStem>.<RESULT>.incomplete.rmed (empty: not written).
+  std::filesystem::path keptResultsDirectory;
+  std::string keptResultsStem;
+};
+
+// A file the run writes on its own (the steps of a failed command): in the work directory, and
+// where it is copied back.
+struct KeptFile {
+  std::filesystem::path work;
+  std::filesystem::path destination;
 };
 
 // Counts that decide the job diagnostic.
@@ -92,6 +105,11 @@ public:
   // they are.
   void noteKeptResult(const std::string& description) { keptResults_.push_back(description); }
   const std::vector<std::string>& keptResults() const { return keptResults_; }
+  const std::vector<KeptFile>& keptFiles() const { return keptFiles_; }
+
+  // The concept an operator is making (OperatorCall::makeConcept): when the operator fails,
+  // the steps it already computed are written to a MED file (keepPartialResult).
+  void noteConceptInProgress(std::shared_ptr<Concept> c) { inProgress_ = std::move(c); }
 
 private:
   const Catalog& catalog_;
@@ -101,11 +119,15 @@ private:
   std::map<int, std::filesystem::path> units_;
   std::map<int, std::filesystem::path> unitOrigins_;
   UserError withUserPaths(const UserError& e) const;
+  UserError keepPartialResult(const UserError& e);
+  Value runOperator(Value (*op)(OperatorCall&), OperatorCall& opCall);
   mutable std::vector<int> opened_;
   SessionCounts counts_;
   std::vector<CommandTiming> timings_;
   std::map<std::string, std::shared_ptr<Concept>> concepts_;
   std::vector<std::string> keptResults_;
+  std::vector<KeptFile> keptFiles_;
+  std::shared_ptr<Concept> inProgress_;
   bool finished_ = false;
   int commandCount_ = 0;
 };

@@ -3,6 +3,7 @@
 #include "Commands.hpp"
 #include "solver/job/BatchJob.hpp"
 #include "solver/nonlinear/ProgressLine.hpp"
+#include "solver/session/ExceptionDiagnostic.hpp"
 
 #include <charconv>
 #include <iostream>
@@ -30,6 +31,9 @@ void printOutcome(const JobResult& job) {
   std::cerr << "stella: diagnostic " << diagnosticWord(job.diagnostic) << "\n";
   for (const auto& f : job.resultFiles) {
     std::cerr << "stella: wrote " << f.string() << "\n";
+  }
+  for (const auto& f : job.copyFailures) {
+    std::cerr << "stella: NOT copied back: " << f << "\n";
   }
   if (!job.workDirectory.empty()) {
     std::cerr << "stella: work directory kept: " << job.workDirectory.string() << "\n";
@@ -75,12 +79,19 @@ int run(const RunArguments& args) {
       job = runCommandFile(target, units, options);
     }
     printOutcome(job);
-    return exitCode(job.diagnostic);
+    const int code = exitCode(job.diagnostic);
+    // A message file that could not be copied back after an OK run is still an error.
+    return code == 0 && !job.copyFailures.empty() ? exitCode(JobDiagnostic::Error) : code;
   } catch (const UserError& e) {
     for (const auto& d : e.diagnostics()) {
       std::cerr << formatDiagnostic(d);
     }
     return exitInput;
+  } catch (const std::exception& e) {
+    // Before the message file exists (the work directory cannot be made...): standard error.
+    const Diagnostic d = diagnosticOf(e, "preparing the run");
+    std::cerr << formatDiagnostic(d);
+    return exitCode(d.kind == FailureKind::Abort ? JobDiagnostic::AbnormalAbort : JobDiagnostic::Error);
   }
 }
 

@@ -3,6 +3,10 @@
 
 #include "Commands.hpp"
 
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+
 #include <CLI/CLI.hpp>
 #include <iostream>
 
@@ -24,6 +28,7 @@ Exit codes of `stella run` (the job diagnostic at the end of the message file):
   0  OK or <A>_ALARM          1  NOOK_TEST_RESU or NO_TEST_RESU
   2  <F>_SYNTAX_ERROR         3  <F>_ERROR
   4  <S>_NO_CONVERGENCE       5  <F>_ABNORMAL_ABORT
+  6  <S>_INTERRUPTED (signal) 7  <S>_CPU_LIMIT (P time_limit)
   64 bad command line         65 unreadable or malformed .export / input file
 `stella check` exits 0 when the file is valid, 2 when it is not.)";
 
@@ -82,6 +87,14 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   convert->add_option("output", convertOut, "the mesh to write (.med, .mail, .msh)")->required();
 
+  // The last resort of the single error path: an exception that escaped every handler is a bug
+  // in stella, reported as <F>_ABNORMAL_ABORT's exit code, never as a crash (134).
+  std::set_terminate([] {
+    std::fputs("stella: <F> <INTERNAL_3> an error escaped every handler of the run: this is a bug in "
+               "stella, please report it with the command file\n",
+               stderr);
+    std::_Exit(5);
+  });
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
