@@ -40,6 +40,15 @@ std::complex<double> toComplex(const Value& v) {
   langError("LANG_ZERO", std::string(what) + " by zero");
 }
 
+// Python raises OverflowError when a power of finite numbers is too large for a float (where
+// `*` and `+` give inf): `2.0 ** 1e6`.
+[[noreturn]] void powerOverflow(const Value& a, const Value& b) {
+  langError("LANG_OVERFLOW",
+            "numerical result out of range: " + a.repr() + " ** " + b.repr() +
+                " is larger than the largest float (about 1.8e308)",
+            "Python raises OverflowError here; check the exponent");
+}
+
 std::int64_t intPower(std::int64_t base, std::int64_t exponent) {
   std::int64_t result = 1;
   while (exponent > 0) {
@@ -61,7 +70,11 @@ double realPower(double a, double b) {
   if (a < 0.0 && b != std::floor(b)) {
     langError("LANG_VALUE", "a negative number cannot be raised to a fractional power");
   }
-  return std::pow(a, b);
+  double result = std::pow(a, b);
+  if (std::isinf(result) && std::isfinite(a) && std::isfinite(b)) {
+    powerOverflow(Value(a), Value(b));
+  }
+  return result;
 }
 
 Value repeat(const Value& seq, std::int64_t times, const RuntimeLimits& limits) {
@@ -240,8 +253,15 @@ Value complexArithmetic(BinaryOp op, std::complex<double> x, std::complex<double
       divisionByZero("complex division");
     }
     return Value(x / y);
-  case BinaryOp::Pow:
-    return Value(std::pow(x, y));
+  case BinaryOp::Pow: {
+    std::complex<double> result = std::pow(x, y);
+    bool finiteOperands = std::isfinite(x.real()) && std::isfinite(x.imag()) && std::isfinite(y.real()) &&
+                          std::isfinite(y.imag());
+    if (finiteOperands && (std::isinf(result.real()) || std::isinf(result.imag()))) {
+      powerOverflow(a, b);
+    }
+    return Value(result);
+  }
   default:
     unsupported(binaryOpText(op), a, b);
   }
