@@ -87,6 +87,7 @@ Value repeat(const Value& seq, std::int64_t times, const RuntimeLimits& limits) 
       langError("LANG_SIZE",
                 "string too long (more than " + std::to_string(limits.maxStringLength) + " characters)");
     }
+    chargeBulk(times, static_cast<std::int64_t>(s.size()));
     std::string out;
     out.reserve(s.size() * static_cast<std::size_t>(times));
     for (std::int64_t i = 0; i < times; ++i) {
@@ -99,6 +100,7 @@ Value repeat(const Value& seq, std::int64_t times, const RuntimeLimits& limits) 
     langError("LANG_SIZE",
               "sequence too long (more than " + std::to_string(limits.maxSequenceLength) + " items)");
   }
+  chargeBulk(static_cast<std::int64_t>(items.size()) * times, sizeof(Value));
   ValueList out;
   out.reserve(items.size() * static_cast<std::size_t>(times));
   for (std::int64_t i = 0; i < times; ++i) {
@@ -112,13 +114,15 @@ Value concatenate(const Value& a, const Value& b, const RuntimeLimits& limits) {
     if (static_cast<std::int64_t>(a.asString().size() + b.asString().size()) > limits.maxStringLength) {
       langError("LANG_SIZE", "string too long");
     }
+    chargeBulk(1, static_cast<std::int64_t>(a.asString().size() + b.asString().size()));
     return Value(a.asString() + b.asString());
   }
-  ValueList out = a.items();
   const ValueList& more = b.items();
-  if (static_cast<std::int64_t>(out.size() + more.size()) > limits.maxSequenceLength) {
+  if (static_cast<std::int64_t>(a.items().size() + more.size()) > limits.maxSequenceLength) {
     langError("LANG_SIZE", "sequence too long");
   }
+  chargeBulk(static_cast<std::int64_t>(a.items().size() + more.size()), sizeof(Value));
+  ValueList out = a.items();
   out.insert(out.end(), more.begin(), more.end());
   return a.isTuple() ? Value::tuple(std::move(out)) : Value::list(std::move(out));
 }
@@ -493,6 +497,7 @@ const RangeObject* asRange(const Value& v) {
 
 ValueList iterableItems(const Value& v, const RuntimeLimits& limits) {
   if (v.isSequence()) {
+    chargeBulk(static_cast<std::int64_t>(v.items().size()), sizeof(Value));
     return v.items();
   }
   if (const RangeObject* r = asRange(v)) {
@@ -504,6 +509,9 @@ ValueList iterableItems(const Value& v, const RuntimeLimits& limits) {
   ValueList out;
   forEachItem(v, [&](const Value& item) {
     out.push_back(item);
+    if (out.size() == out.capacity()) {
+      chargeAllocation(static_cast<std::int64_t>(out.capacity() * sizeof(Value)));
+    }
     return true;
   });
   return out;

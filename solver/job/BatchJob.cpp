@@ -212,7 +212,12 @@ JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
     for (const auto& d : spec.data) {
       session->declareUnitOrigin(d.unit, d.source);
     }
-    Interpreter interpreter(*session, *session);
+    InterpreterOptions budget;
+    if (options.maxOperations > 0) {
+      budget.operationBudget = options.maxOperations;
+    }
+    budget.memoryBudget = options.maxMemoryBytes;
+    Interpreter interpreter(*session, *session, budget);
     for (const auto& name : catalog.commandNames()) {
       interpreter.defineCommand(name);
     }

@@ -51,7 +51,12 @@ int check(const CheckArguments& args) {
     options.executeOperators = false;
     const Catalog& catalog = Catalog::builtin();
     Session session(catalog, silent, silent, options);
-    Interpreter interpreter(session, sink);
+    InterpreterOptions budget;
+    if (args.maxOperations > 0) {
+      budget.operationBudget = args.maxOperations;
+    }
+    budget.memoryBudget = args.maxMemoryMiB << 20;
+    Interpreter interpreter(session, sink, budget);
     for (const auto& name : catalog.commandNames()) {
       interpreter.defineCommand(name);
     }

@@ -17,6 +17,8 @@ struct RunArguments {
   bool keepWork = false;
   bool quiet = false;
   std::string commandLine;
+  long long maxOperations = 0; // the evaluation budget (0: the default, doc/language.md)
+  long long maxMemoryMiB = 0;
 };
 int run(const RunArguments& args);
 
@@ -25,6 +27,8 @@ struct CheckArguments {
   bool syntaxOnly = false;
   bool dumpTokens = false;
   bool dumpAst = false;
+  long long maxOperations = 0;
+  long long maxMemoryMiB = 0;
 };
 int check(const CheckArguments& args);
 

@@ -50,6 +50,8 @@ int run(const RunArguments& args) {
     setProgressTerminal(&std::cout);
   }
   options.commandLine = args.commandLine;
+  options.maxOperations = args.maxOperations;
+  options.maxMemoryBytes = args.maxMemoryMiB << 20;
 
   std::filesystem::path target(args.target);
   try {

@@ -54,6 +54,11 @@ int main(int argc, char** argv) {
                 "count only reference lines of TEST_RESU; VALE_CALC lines are information");
   run->add_flag("--keep-work", runArgs.keepWork, "keep the work directory after a successful run");
   run->add_flag("-q,--quiet", runArgs.quiet, "do not copy the message file to standard output");
+  const char* operationsHelp = "evaluation budget of the command files: operations (default 1000000000)";
+  const char* memoryHelp = "evaluation budget: MiB the command files' values may hold (default 2048, at "
+                           "most half the RAM)";
+  run->add_option("--max-operations", runArgs.maxOperations, operationsHelp)->check(CLI::PositiveNumber);
+  run->add_option("--max-memory", runArgs.maxMemoryMiB, memoryHelp)->check(CLI::PositiveNumber);
 
   stella::cli::CheckArguments checkArgs;
   auto* check = app.add_subcommand("check", "Validate a command file without running it");
@@ -61,6 +66,8 @@ int main(int argc, char** argv) {
   check->add_flag("--syntax", checkArgs.syntaxOnly, "parse only");
   check->add_flag("--dump-tokens", checkArgs.dumpTokens, "print the tokens");
   check->add_flag("--dump-ast", checkArgs.dumpAst, "print the syntax tree");
+  check->add_option("--max-operations", checkArgs.maxOperations, operationsHelp)->check(CLI::PositiveNumber);
+  check->add_option("--max-memory", checkArgs.maxMemoryMiB, memoryHelp)->check(CLI::PositiveNumber);
 
   std::string fmtFile;
   bool fmtInPlace = false;

@@ -129,5 +129,36 @@ case_material_nan() {
   check "E=0 refused at E" grep -q "e0.comm:4:31: error: ELAS E = 0: E > 0 is expected" e0.mess
 }
 
+case_budget() {
+  cat > loop.comm <<'COMM'
+DEBUT()
+total = 0
+for i in range(10**15):
+    total = total + i
+FIN()
+COMM
+  "$stella" run loop.comm --quiet --max-operations 1000000 >out.txt 2>err.txt
+  code=$?
+  check "run: for over range(10**15) stops on the budget, LANG_BUDGET at the loop" grep -q "loop.comm:3:1: error: the evaluation budget of 1 000 000 operations" loop.mess
+  check "run: the note names the loop" grep -q "in the for loop \`for i in range(10\*\*15)\` (line 3)" loop.mess
+  check "run: exit code of an error (3)" test "$code" -eq 3
+  "$stella" check loop.comm --max-operations 1000000 >out.txt 2>err.txt
+  code=$?
+  check "check: the same error" grep -q "loop.comm:3:1: error: the evaluation budget of 1 000 000 operations" err.txt
+  check "check: exit 2" test "$code" -eq 2
+  cat > memory.comm <<'COMM'
+DEBUT()
+kept = []
+while True:
+    kept.append([0.0] * 1000000)
+FIN()
+COMM
+  "$stella" run memory.comm --quiet --max-memory 200 >out.txt 2>err.txt
+  code=$?
+  check "run: a while loop keeping 40 MiB per turn stops on a 200 MiB budget at the loop" grep -q "memory.comm:3:1: error: the values of the command file hold .* MiB, more than the budget of 200 MiB \[LANG_BUDGET\]" memory.mess
+  check "run: the note says where it ran out" grep -q "the budget ran out at .*memory.comm:4:" memory.mess
+  check "run: exit code of an error (3)" test "$code" -eq 3
+}
+
 "case_$name"
 [ $fails -eq 0 ]
