@@ -107,6 +107,22 @@ std::string callHeader(const std::string& target, const std::string& command) {
   return target.empty() ? command + "(" : target + " = " + command + "(";
 }
 
+// An error an operator reports elsewhere than in its own call (a FORMULE it evaluates, defined
+// earlier in the file) also names the command that was running.
+UserError withCallingCommand(const UserError& e, const std::string& command, const CallArguments& args) {
+  std::vector<Diagnostic> ds = e.diagnostics();
+  const SourceLocation& call = args.callLocation;
+  const int lastLine = args.closeLocation.known() ? args.closeLocation.line : call.line;
+  for (auto& d : ds) {
+    const bool inCall =
+        d.location.file == call.file && d.location.line >= call.line && d.location.line <= lastLine;
+    if (call.known() && !inCall) {
+      d.withNote("while running " + command + " at " + call.str());
+    }
+  }
+  return UserError(std::move(ds));
+}
+
 } // namespace
 
 Session::Session(const Catalog& catalog, std::ostream& message, std::ostream& result, SessionOptions options)
@@ -227,7 +243,7 @@ Value Session::callCommand(const std::string& command, const CallArguments& args
     try {
       result = op(opCall);
     } catch (const UserError& e) {
-      throw withUserPaths(e);
+      throw withCallingCommand(withUserPaths(e), command, args);
     } catch (const InternalError& e) {
       throw UserError(Diagnostic::fatal("INTERNAL_1", "internal error in stella while running " + command,
                                         args.callLocation)
