@@ -212,6 +212,9 @@ JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
     for (const auto& d : spec.data) {
       session->declareUnitOrigin(d.unit, d.source);
     }
+    for (const auto& [unit, destination] : spec.results) {
+      session->declareResultUnit(unit);
+    }
     InterpreterOptions budget;
     if (options.maxOperations > 0) {
       budget.operationBudget = options.maxOperations;

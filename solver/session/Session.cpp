@@ -223,6 +223,12 @@ Value Session::callCommand(const std::string& command, const CallArguments& args
                                   "run it yet"));
   }
 
+  try {
+    checkOutputUnit(command, call.keywords, args.callLocation);
+  } catch (const UserError& e) {
+    throw asSyntax(e);
+  }
+
   ++commandCount_;
   const std::string location = args.callLocation.str();
   message_ << "\n  # " << std::string(70, '-') << "\n"

@@ -51,6 +51,13 @@ int check(const CheckArguments& args) {
     options.executeOperators = false;
     const Catalog& catalog = Catalog::builtin();
     Session session(catalog, silent, silent, options);
+    // the result units of a quick run (`stella run FILE.comm`), and those given with --unit
+    for (int unit : {6, 8, 80, 81}) {
+      session.declareResultUnit(unit);
+    }
+    for (int unit : args.units) {
+      session.declareResultUnit(unit);
+    }
     InterpreterOptions budget;
     if (args.maxOperations > 0) {
       budget.operationBudget = args.maxOperations;

@@ -16,6 +16,7 @@ struct RunArguments {
   bool referenceOnly = false;
   bool keepWork = false;
   bool quiet = false;
+  bool confine = false; // refuse data and result paths outside the study's folder
   std::string commandLine;
   long long maxOperations = 0; // the evaluation budget (0: the default, doc/language.md)
   long long maxMemoryMiB = 0;
@@ -27,6 +28,7 @@ struct CheckArguments {
   bool syntaxOnly = false;
   bool dumpTokens = false;
   bool dumpAst = false;
+  std::vector<int> units; // result units declared besides the quick run's 6, 8, 80, 81
   long long maxOperations = 0;
   long long maxMemoryMiB = 0;
 };

@@ -2,6 +2,7 @@
 
 #include "Commands.hpp"
 #include "solver/job/BatchJob.hpp"
+#include "solver/job/Confine.hpp"
 #include "solver/nonlinear/ProgressLine.hpp"
 
 #include <charconv>
@@ -61,7 +62,11 @@ int run(const RunArguments& args) {
         std::cerr << "stella: --unit goes with a .comm file; a .export declares its units itself\n";
         return exitUsage;
       }
-      job = runExport(Export::read(target), options);
+      Export study = Export::read(target);
+      if (args.confine) {
+        confineExport(study, options.outputDirectory);
+      }
+      job = runExport(study, options);
     } else {
       std::map<int, std::filesystem::path> units;
       for (const auto& u : args.units) {
@@ -73,6 +78,9 @@ int run(const RunArguments& args) {
           return exitUsage;
         }
         units[unit] = path;
+      }
+      if (args.confine) {
+        confineCommandFile(target, units, options.outputDirectory);
       }
       job = runCommandFile(target, units, options);
     }
