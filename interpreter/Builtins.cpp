@@ -547,7 +547,14 @@ Value binaryMath(const char* name, double (*fn)(double, double)) {
     if (n == "fmod" && y == 0.0) {
       langError("LANG_VALUE", "math domain error: fmod(x, 0)");
     }
-    return Value(fn(x, y));
+    double r = fn(x, y);
+    if (std::isinf(r) && std::isfinite(x) && std::isfinite(y)) {
+      langError("LANG_OVERFLOW",
+                "math range error: " + n + "(" + Value(x).repr() + ", " + Value(y).repr() +
+                    ") is larger than the largest float (about 1.8e308)",
+                "Python raises OverflowError here");
+    }
+    return Value(r);
   });
 }
 

@@ -16,6 +16,8 @@ public:
   EmbeddedText(const std::string& text, const SourceLocation& origin);
   const std::shared_ptr<const SourceFile>& file() const { return file_; }
   SourceLocation map(const SourceLocation& at) const;
+  bool mapped() const { return mapped_; }
+  const SourceLocation& origin() const { return origin_; }
   std::vector<Diagnostic> map(std::vector<Diagnostic> ds) const;
 
 private:

@@ -5,6 +5,8 @@
 // EvaluatorCycles.cpp. This file: construction, errors, step budget, module execution.
 #include "EvaluatorParts.hpp"
 
+#include "Formatter.hpp"
+
 namespace stella {
 
 namespace {
@@ -23,21 +25,50 @@ private:
 } // namespace
 
 Evaluator::Evaluator(CommandHandler* handler, DiagnosticSink* sink, EvaluatorOptions options)
-    : handler_(handler), sink_(sink), options_(options) {}
+    : handler_(handler), sink_(sink), options_(options), meter_(options.budget) {}
 
 void Evaluator::raise(const Pos& pos, const std::string& id, const std::string& message,
                       const std::string& note) const {
   Diagnostic d = Diagnostic::fatal(id, message, location(pos));
+  if (id == "LANG_BUDGET" && !loops_.empty()) {
+    // the loop is the culprit: the error points at it, a note at where the budget ran out
+    const RunningLoop& loop = loops_.back();
+    const Pos& at = loop.statement != nullptr ? loop.statement->pos : loop.clause->pos;
+    d.location = location(at);
+    d.withNote(runningLoopNote());
+    d.withNote("the budget ran out at " + location(pos).str());
+  }
   if (!note.empty()) {
     d.withNote(note);
   }
   throw UserError(std::move(d));
 }
 
+// "in the for loop `for i in range(10**15)` (line 3), at its turn 24999"
+std::string Evaluator::runningLoopNote() const {
+  const RunningLoop& loop = loops_.back();
+  std::string what;
+  int line = 0;
+  if (loop.statement != nullptr) {
+    const Stmt& s = *loop.statement;
+    line = s.pos.line;
+    what = s.kind == StmtKind::While ? "the while loop `while " + formatExpression(*s.exprs[0]) + "`"
+                                     : "the for loop `for " + formatExpression(*s.exprs[0]) + " in " +
+                                           formatExpression(*s.exprs[1]) + "`";
+  } else {
+    const Expr& c = *loop.clause;
+    line = c.pos.line;
+    what = "the comprehension `for " + formatExpression(*c.items[0]) + " in " +
+           formatExpression(*c.items[1]) + "`";
+  }
+  return "in " + what + " (line " + std::to_string(line) + "), at its turn " + std::to_string(loop.turns);
+}
+
 void Evaluator::countStep(const Pos& pos) {
-  if (options_.stepBudget > 0 && ++steps_ > options_.stepBudget) {
-    raise(pos, "LANG_LIMIT",
-          "the run exceeded its budget of " + std::to_string(options_.stepBudget) + " steps");
+  try {
+    meter_.operation();
+  } catch (const LangError& e) {
+    raise(pos, e);
   }
 }
 
@@ -46,6 +77,7 @@ void Evaluator::defineCommand(const std::string& name) {
 }
 
 void Evaluator::execModule(const std::shared_ptr<const Module>& module, std::size_t firstStatement) {
+  MeterGuard metering(meter_);
   auto savedModule = module_;
   auto savedFile = file_;
   module_ = module;
@@ -59,6 +91,7 @@ void Evaluator::execModule(const std::shared_ptr<const Module>& module, std::siz
 
 Value Evaluator::evalStandalone(const std::shared_ptr<const Module>& module, const Expr& expr,
                                 const std::function<std::optional<Value>(const std::string&)>* lookup) {
+  MeterGuard metering(meter_);
   module_ = module;
   file_ = module->file;
   lookup_ = lookup;

@@ -7,6 +7,7 @@
 #include "CommandHandler.hpp"
 #include "Interpreter.hpp"
 #include "Runtime.hpp"
+#include "WorkMeter.hpp"
 
 #include <exception>
 #include <functional>
@@ -23,7 +24,7 @@ struct FinishSignal {};
 
 struct EvaluatorOptions {
   long whileIterationCap = 10'000'000;
-  long long stepBudget = 0; // statements and loop iterations allowed; 0: unlimited
+  EvaluationBudget budget; // operations and memory (WorkMeter.hpp)
   RuntimeLimits limits;
   int maxCallDepth = 200;
   int maxEvalDepth = 2500;
@@ -63,6 +64,7 @@ public:
   const EvaluatorOptions& options() const { return options_; }
   DiagnosticSink* sink() const { return sink_; }
   void countStep(const Pos& pos);
+  WorkMeter& meter() { return meter_; }
 
 private:
   enum class Flow { Normal, Break, Continue, Return };
@@ -113,6 +115,16 @@ private:
   void checkNotDestroyed(const Value& v, const Pos& at, int depth = 0) const;
 
   [[noreturn]] void unknownName(const Expr& e) const;
+  std::string runningLoopNote() const;
+
+  // The loops being run, innermost last: a budget error names the innermost one.
+  struct RunningLoop {
+    const Stmt* statement = nullptr; // a for or while loop
+    const Expr* clause = nullptr;    // or the `for` clause of a comprehension
+    std::int64_t turns = 0;
+  };
+  class LoopGuard;
+  class MeterGuard;
   std::vector<std::string> visibleNames() const;
 
   CommandHandler* handler_;
@@ -125,7 +137,8 @@ private:
   Value returnValue_;
   int callDepth_ = 0;
   int evalDepth_ = 0;
-  long long steps_ = 0;
+  WorkMeter meter_;
+  std::vector<RunningLoop> loops_;
   const std::function<std::optional<Value>(const std::string&)>* lookup_ = nullptr;
   std::unordered_map<const void*, std::weak_ptr<ListObject>> mutatedLists_;
   std::unordered_map<const void*, std::weak_ptr<DictObject>> mutatedDicts_;

@@ -155,8 +155,17 @@ Value Evaluator::callCommand(const std::string& name, const CallArguments& args,
       throw UserError(std::move(d));
     }
   }
+  // the memory a command allocates (meshes, matrices, results) is not the language's
+  struct CommandMetering {
+    WorkMeter& meter;
+    explicit CommandMetering(WorkMeter& m) : meter(m) { meter.enterCommand(); }
+    ~CommandMetering() { meter.leaveCommand(); }
+    CommandMetering(const CommandMetering&) = delete;
+    CommandMetering& operator=(const CommandMetering&) = delete;
+  };
   Value result;
   try {
+    CommandMetering metering(meter_);
     result = handler_->callCommand(name, args, target);
   } catch (const UserError& err) {
     throw TracedError(err, true, nullptr);

@@ -29,6 +29,7 @@ Value Evaluator::eval(const Expr& e) {
   default:
     break;
   }
+  countStep(e.pos);
   DepthGuard guard(evalDepth_, options_.maxEvalDepth, *this, e.pos);
   switch (e.kind) {
   case ExprKind::FString:
@@ -236,12 +237,17 @@ Value Evaluator::evalListComp(const Expr& e) {
         raise(e.pos, "LANG_SIZE", "list too long");
       }
       out.push_back(eval(*e.items[0]));
+      if (out.size() == out.capacity()) {
+        meter_.allocation(static_cast<std::int64_t>(out.capacity() * sizeof(Value)));
+      }
       return;
     }
     const Expr& c = *e.items[clause];
     Value iterable = eval(*c.items[1]);
+    LoopGuard running(loops_, nullptr, &c);
     try {
       forEachItem(iterable, [&](const Value& item) {
+        running.turn();
         countStep(c.pos);
         assignTo(*c.items[0], item);
         for (std::size_t k = 2; k < c.items.size(); ++k) {

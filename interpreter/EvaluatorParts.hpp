@@ -23,6 +23,34 @@ public:
   std::vector<bool> hasDefault;
 };
 
+// Makes an evaluator's meter the one built-ins charge while it runs (restores the previous one:
+// a command may evaluate expressions with an evaluator of its own).
+class Evaluator::MeterGuard {
+public:
+  explicit MeterGuard(WorkMeter& meter) : previous_(activeWorkMeter()) { setActiveWorkMeter(&meter); }
+  ~MeterGuard() { setActiveWorkMeter(previous_); }
+  MeterGuard(const MeterGuard&) = delete;
+  MeterGuard& operator=(const MeterGuard&) = delete;
+
+private:
+  WorkMeter* previous_;
+};
+
+// Records a running loop for the budget's message; `turn()` counts one turn.
+class Evaluator::LoopGuard {
+public:
+  LoopGuard(std::vector<RunningLoop>& loops, const Stmt* statement, const Expr* clause) : loops_(loops) {
+    loops_.push_back(RunningLoop{statement, clause, 0});
+  }
+  ~LoopGuard() { loops_.pop_back(); }
+  void turn() { ++loops_.back().turns; }
+  LoopGuard(const LoopGuard&) = delete;
+  LoopGuard& operator=(const LoopGuard&) = delete;
+
+private:
+  std::vector<RunningLoop>& loops_;
+};
+
 namespace evaluation {
 
 // RAII depth counter: refuses evaluations nested deeper than the stack can hold.

@@ -177,6 +177,9 @@ void Evaluator::assignTo(const Expr& target, const Value& value) {
     try {
       items = iterableItems(value, options_.limits);
     } catch (const LangError& e) {
+      if (e.id == "LANG_BUDGET") {
+        raise(target.pos, e);
+      }
       raise(target.pos, "LANG_TYPE",
             "cannot unpack a '" + value.typeName() + "' into " + std::to_string(target.items.size()) +
                 " names");
@@ -241,7 +244,9 @@ Evaluator::Flow Evaluator::execFor(const Stmt& s) {
   const Expr& target = *s.exprs[0];
   Flow result = Flow::Normal;
   bool broke = false;
+  LoopGuard running(loops_, &s, nullptr);
   auto body = [&](const Value& item) {
+    running.turn();
     countStep(s.pos);
     assignTo(target, item);
     Flow flow = execBlock(s.body);
@@ -268,7 +273,9 @@ Evaluator::Flow Evaluator::execFor(const Stmt& s) {
 
 Evaluator::Flow Evaluator::execWhile(const Stmt& s) {
   long iterations = 0;
+  LoopGuard running(loops_, &s, nullptr);
   while (eval(*s.exprs[0]).truthy()) {
+    running.turn();
     if (++iterations > options_.whileIterationCap) {
       raise(s.pos, "LANG_WHILE",
             "while loop stopped after " + std::to_string(options_.whileIterationCap) +

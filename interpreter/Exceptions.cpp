@@ -114,6 +114,7 @@ const char* classOfErrorId(const std::string& id) {
       {"LANG_NAME", "NameError"},         {"LANG_TYPE", "TypeError"},        {"LANG_CALL", "TypeError"},
       {"LANG_ARGS", "TypeError"},         {"LANG_VALUE", "ValueError"},      {"LANG_ATTR", "AttributeError"},
       {"CONCEPT_1", "AttributeError"},    {"LANG_ASSERT", "AssertionError"}, {"LANG_IMPORT", "ImportError"},
+      {"LANG_OVERFLOW", "OverflowError"},
   };
   auto it = classes.find(id);
   return it == classes.end() ? nullptr : it->second;

@@ -2,6 +2,7 @@
 // comments and blank-line groups, breaking long command calls one keyword per line aligned
 // after the '(' as code_aster users write them. Its output re-parses to the same tree.
 #include "Formatter.hpp"
+#include "SourceEncoding.hpp"
 #include "StringEscape.hpp"
 
 #include "Parser.hpp"
@@ -560,7 +561,15 @@ private:
 std::string formatModule(const Module& module, const std::vector<Comment>& comments) {
   Printer printer(comments);
   printer.block(module.body, 0);
-  return printer.finish();
+  std::string text = printer.finish();
+  // The text is UTF-8 (a file in an 8-bit encoding was decoded when read): its coding line says so.
+  if (auto declaration = declaredEncoding(text);
+      declaration && encodingNamed(declaration->name) != SourceEncoding::Utf8 &&
+      encodingNamed(declaration->name) != SourceEncoding::Unknown) {
+    std::size_t lineStart = declaration->line == 1 ? 0 : text.find('\n') + 1;
+    text.replace(lineStart + declaration->column - 1, declaration->name.size(), "utf-8");
+  }
+  return text;
 }
 
 std::string formatExpression(const Expr& expr) {

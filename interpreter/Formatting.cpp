@@ -571,6 +571,11 @@ Value toFloat(const Value& v) {
         (ec != std::errc() && ec != std::errc::result_out_of_range)) {
       langError("LANG_VALUE", "could not convert string to float: " + v.repr());
     }
+    if (ec == std::errc::result_out_of_range) { // Python: '1e400' is inf, '1e-400' is 0.0
+      const std::size_t e = body.find_first_of("eE");
+      const bool tiny = e != std::string::npos && e + 1 < body.size() && body[e + 1] == '-';
+      d = tiny ? 0.0 : std::numeric_limits<double>::infinity();
+    }
     return Value(negative ? -d : d);
   }
   langError("LANG_TYPE", "float() argument must be a string or a number, not '" + v.typeName() + "'");

@@ -16,7 +16,8 @@ struct Interpreter::Impl {
   static EvaluatorOptions toEvaluatorOptions(const InterpreterOptions& o) {
     EvaluatorOptions e;
     e.whileIterationCap = o.whileIterationCap;
-    e.stepBudget = o.stepBudget;
+    e.budget.operations = o.operationBudget;
+    e.budget.memoryBytes = o.memoryBudget;
     e.limits.maxSequenceLength = o.maxSequenceLength;
     e.limits.maxStringLength = o.maxStringLength;
     return e;

@@ -17,8 +17,9 @@
 namespace stella {
 
 struct InterpreterOptions {
-  long whileIterationCap = 10'000'000;         // a `while` that runs longer stops with an error
-  long long stepBudget = 0;                    // statements + loop iterations allowed (0: unlimited; fuzzing)
+  long whileIterationCap = 10'000'000;       // a `while` that runs longer stops with an error
+  long long operationBudget = 1'000'000'000; // operations evaluated (0: unlimited); LANG_BUDGET beyond
+  std::int64_t memoryBudget = 0; // bytes the language's values may hold (0: 2 GiB, at most half the RAM)
   std::int64_t maxSequenceLength = 10'000'000; // a longer list/tuple is refused (LANG_SIZE)
   std::int64_t maxStringLength = 100'000'000;  // a longer string is refused (LANG_SIZE)
 };

@@ -3,6 +3,10 @@
 // literals are in LexerLiterals.cpp, operators and brackets in LexerOperators.cpp.
 #include "Lexer.hpp"
 #include "LexerTables.hpp"
+#include "SourceEncoding.hpp"
+
+#include <algorithm>
+#include <cstdio>
 
 namespace stella {
 
@@ -14,6 +18,39 @@ Lexer::Lexer(std::shared_ptr<const SourceFile> file, bool expressionMode)
     at_ = 3; // UTF-8 byte order mark
     lineStart_ = 3;
   }
+  checkEncoding();
+}
+
+// Python's rules (PEP 263): an unknown declared encoding is an error at its name; without a
+// declaration (or with utf-8) the first byte that is not UTF-8 is an error at its place. A file
+// declared in an 8-bit encoding was decoded when it was read (SourceFile::fromText).
+void Lexer::checkEncoding() {
+  auto declaration = declaredEncoding(src_);
+  if (declaration) {
+    if (encodingNamed(declaration->name) == SourceEncoding::Unknown) {
+      Pos at{declaration->line, static_cast<int>(declaration->column),
+             static_cast<int>(declaration->name.size())};
+      error("SYNTAX_ENCODING", "unknown encoding '" + declaration->name + "'", at,
+            "the coding line may name utf-8, latin-1 (iso-8859-1), iso-8859-15 or cp1252");
+      return;
+    }
+  }
+  auto bad = invalidUtf8(src_);
+  if (!bad) {
+    return;
+  }
+  const std::size_t lineBegin = src_.rfind('\n', *bad == 0 ? 0 : *bad - 1);
+  const std::size_t first = lineBegin == std::string_view::npos || (*bad == 0) ? 0 : lineBegin + 1;
+  Pos at{
+      1 + static_cast<int>(std::count(src_.begin(), src_.begin() + static_cast<std::ptrdiff_t>(*bad), '\n')),
+      1 + static_cast<int>(*bad - first), 1};
+  char byte[8];
+  std::snprintf(byte, sizeof(byte), "0x%02X", static_cast<unsigned char>(src_[*bad]));
+  error("SYNTAX_ENCODING",
+        std::string("the byte ") + byte +
+            (declaration ? " is not UTF-8, the encoding its coding line declares"
+                         : " is not UTF-8 and no coding line declares the file's encoding"),
+        at, "save the file in UTF-8, or declare its encoding on line 1 or 2: # -*- coding: latin-1 -*-");
 }
 
 Lexer::Lexer(std::shared_ptr<const SourceFile> file, std::string_view text, int firstLine, int firstColumn)

@@ -47,6 +47,7 @@ private:
   Token lexString(std::size_t prefixLength, bool raw, bool fString);
   Token lexOperator();
   void error(const std::string& id, const std::string& message, Pos at, const std::string& note = {});
+  void checkEncoding();
   int column(std::size_t offset) const { return static_cast<int>(offset - lineStart_) + firstColumn_; }
   Pos posOf(std::size_t begin, std::size_t end) const;
   void newline(std::size_t offsetAfter);

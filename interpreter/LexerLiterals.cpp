@@ -4,6 +4,7 @@
 #include "LexerTables.hpp"
 
 #include <charconv>
+#include <limits>
 
 namespace stella {
 
@@ -95,7 +96,14 @@ Token Lexer::lexNumber() {
   }
   if (real || imaginary) {
     t.kind = imaginary ? TokenKind::Imaginary : TokenKind::Real;
-    std::from_chars(digits.data(), digits.data() + digits.size(), t.realValue);
+    auto [end, status] = std::from_chars(digits.data(), digits.data() + digits.size(), t.realValue);
+    (void)end;
+    if (status == std::errc::result_out_of_range) {
+      // Python's rule: a literal beyond the largest float is inf (1e400), below the smallest 0.0
+      const std::size_t e = digits.find_first_of("eE");
+      const bool tiny = e != std::string::npos && e + 1 < digits.size() && digits[e + 1] == '-';
+      t.realValue = tiny ? 0.0 : std::numeric_limits<double>::infinity();
+    }
     if (digits == ".") {
       t.realValue = 0.0;
     }

@@ -132,6 +132,7 @@ Value join(Evaluator& ev, const std::string& sep, const CallArguments& a) {
       langError("LANG_SIZE", "string too long");
     }
   }
+  chargeAllocation(static_cast<std::int64_t>(out.size()));
   return Value(std::move(out));
 }
 
@@ -337,6 +338,9 @@ Value listMethod(Evaluator& ev, const Value& self, const std::string& name, cons
     arity(a, name, 1, 1);
     if (items.size() >= maxLength) {
       langError("LANG_SIZE", "list too long");
+    }
+    if (items.size() == items.capacity()) { // the list's storage is about to double
+      chargeAllocation(static_cast<std::int64_t>(items.capacity() * sizeof(Value)));
     }
     items.push_back(a.positional[0]);
     return Value();

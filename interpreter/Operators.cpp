@@ -41,6 +41,15 @@ std::complex<double> toComplex(const Value& v) {
   langError("LANG_ZERO", std::string(what) + " by zero");
 }
 
+// Python raises OverflowError when a power of finite numbers is too large for a float (where
+// `*` and `+` give inf): `2.0 ** 1e6`.
+[[noreturn]] void powerOverflow(const Value& a, const Value& b) {
+  langError("LANG_OVERFLOW",
+            "numerical result out of range: " + a.repr() + " ** " + b.repr() +
+                " is larger than the largest float (about 1.8e308)",
+            "Python raises OverflowError here; check the exponent");
+}
+
 std::int64_t intPower(std::int64_t base, std::int64_t exponent) {
   std::int64_t result = 1;
   while (exponent > 0) {
@@ -62,7 +71,11 @@ double realPower(double a, double b) {
   if (a < 0.0 && b != std::floor(b)) {
     langError("LANG_VALUE", "a negative number cannot be raised to a fractional power");
   }
-  return std::pow(a, b);
+  double result = std::pow(a, b);
+  if (std::isinf(result) && std::isfinite(a) && std::isfinite(b)) {
+    powerOverflow(Value(a), Value(b));
+  }
+  return result;
 }
 
 Value repeat(const Value& seq, std::int64_t times, const RuntimeLimits& limits) {
@@ -75,6 +88,7 @@ Value repeat(const Value& seq, std::int64_t times, const RuntimeLimits& limits) 
       langError("LANG_SIZE",
                 "string too long (more than " + std::to_string(limits.maxStringLength) + " characters)");
     }
+    chargeBulk(times, static_cast<std::int64_t>(s.size()));
     std::string out;
     out.reserve(s.size() * static_cast<std::size_t>(times));
     for (std::int64_t i = 0; i < times; ++i) {
@@ -87,6 +101,7 @@ Value repeat(const Value& seq, std::int64_t times, const RuntimeLimits& limits) 
     langError("LANG_SIZE",
               "sequence too long (more than " + std::to_string(limits.maxSequenceLength) + " items)");
   }
+  chargeBulk(static_cast<std::int64_t>(items.size()) * times, sizeof(Value));
   ValueList out;
   out.reserve(items.size() * static_cast<std::size_t>(times));
   for (std::int64_t i = 0; i < times; ++i) {
@@ -100,13 +115,15 @@ Value concatenate(const Value& a, const Value& b, const RuntimeLimits& limits) {
     if (static_cast<std::int64_t>(a.asString().size() + b.asString().size()) > limits.maxStringLength) {
       langError("LANG_SIZE", "string too long");
     }
+    chargeBulk(1, static_cast<std::int64_t>(a.asString().size() + b.asString().size()));
     return Value(a.asString() + b.asString());
   }
-  ValueList out = a.items();
   const ValueList& more = b.items();
-  if (static_cast<std::int64_t>(out.size() + more.size()) > limits.maxSequenceLength) {
+  if (static_cast<std::int64_t>(a.items().size() + more.size()) > limits.maxSequenceLength) {
     langError("LANG_SIZE", "sequence too long");
   }
+  chargeBulk(static_cast<std::int64_t>(a.items().size() + more.size()), sizeof(Value));
+  ValueList out = a.items();
   out.insert(out.end(), more.begin(), more.end());
   return a.isTuple() ? Value::tuple(std::move(out)) : Value::list(std::move(out));
 }
@@ -241,8 +258,15 @@ Value complexArithmetic(BinaryOp op, std::complex<double> x, std::complex<double
       divisionByZero("complex division");
     }
     return Value(x / y);
-  case BinaryOp::Pow:
-    return Value(std::pow(x, y));
+  case BinaryOp::Pow: {
+    std::complex<double> result = std::pow(x, y);
+    bool finiteOperands = std::isfinite(x.real()) && std::isfinite(x.imag()) && std::isfinite(y.real()) &&
+                          std::isfinite(y.imag());
+    if (finiteOperands && (std::isinf(result.real()) || std::isinf(result.imag()))) {
+      powerOverflow(a, b);
+    }
+    return Value(result);
+  }
   default:
     unsupported(binaryOpText(op), a, b);
   }
@@ -474,6 +498,7 @@ const RangeObject* asRange(const Value& v) {
 
 ValueList iterableItems(const Value& v, const RuntimeLimits& limits) {
   if (v.isSequence()) {
+    chargeBulk(static_cast<std::int64_t>(v.items().size()), sizeof(Value));
     return v.items();
   }
   if (const RangeObject* r = asRange(v)) {
@@ -485,6 +510,9 @@ ValueList iterableItems(const Value& v, const RuntimeLimits& limits) {
   ValueList out;
   forEachItem(v, [&](const Value& item) {
     out.push_back(item);
+    if (out.size() == out.capacity()) {
+      chargeAllocation(static_cast<std::int64_t>(out.capacity() * sizeof(Value)));
+    }
     return true;
   });
   return out;

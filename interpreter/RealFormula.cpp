@@ -264,8 +264,11 @@ void FormulaProgram::domainError(std::size_t pc, const std::string& what,
   }
   Pos p = pc < positions.size() ? positions[pc] : Pos{1, 1, 1};
   SourceLocation at{embedded.file(), p.line, p.column, p.length};
-  throw UserError(Diagnostic::fatal("FORMULA_DOMAIN", message.str(), embedded.map(at))
-                      .withNote("the formula has no value there; check its parameters' range"));
+  Diagnostic d = Diagnostic::fatal("FORMULA_DOMAIN", message.str(), embedded.map(at));
+  if (!embedded.mapped() && embedded.origin().known()) {
+    d.withNote("in the formula written at " + embedded.origin().str());
+  }
+  throw UserError(std::move(d.withNote("the formula has no value there; check its parameters' range")));
 }
 
 namespace {

@@ -6,6 +6,7 @@
 #include "Ast.hpp"
 #include "SequenceObject.hpp"
 #include "Value.hpp"
+#include "WorkMeter.hpp"
 
 #include <cstdint>
 #include <string>
@@ -90,6 +91,7 @@ template <class F> void forEachItem(const Value& v, F&& f) {
   case Value::Kind::Tuple: {
     auto keep = v; // the tuple's storage stays alive while iterating
     for (const Value& item : keep.items()) {
+      chargeOperation();
       if (!f(item)) {
         return;
       }
@@ -100,6 +102,7 @@ template <class F> void forEachItem(const Value& v, F&& f) {
     auto list = v.asList();
     for (std::size_t i = 0; i < list->items.size(); ++i) {
       Value item = list->items[i];
+      chargeOperation();
       if (!f(item)) {
         return;
       }
@@ -119,6 +122,7 @@ template <class F> void forEachItem(const Value& v, F&& f) {
         len = 2;
       }
       len = std::min(len, s.size() - i);
+      chargeOperation();
       if (!f(Value(s.substr(i, len)))) {
         return;
       }
@@ -130,6 +134,7 @@ template <class F> void forEachItem(const Value& v, F&& f) {
     auto dict = v.asDict();
     for (std::size_t i = 0; i < dict->items.size(); ++i) {
       Value key = dict->items[i].first;
+      chargeOperation();
       if (!f(key)) {
         return;
       }
@@ -140,6 +145,7 @@ template <class F> void forEachItem(const Value& v, F&& f) {
     if (const RangeObject* r = asRange(v)) {
       std::int64_t n = r->size();
       for (std::int64_t i = 0; i < n; ++i) {
+        chargeOperation();
         if (!f(Value(r->at(i)))) {
           return;
         }

@@ -1,6 +1,7 @@
 #include "SourceFile.hpp"
 
 #include "Diagnostics.hpp"
+#include "SourceEncoding.hpp"
 
 #include <fstream>
 #include <sstream>
@@ -28,7 +29,8 @@ std::shared_ptr<const SourceFile> SourceFile::load(const std::string& path) {
 }
 
 std::shared_ptr<const SourceFile> SourceFile::fromText(std::string name, std::string text) {
-  return std::shared_ptr<const SourceFile>(new SourceFile(std::move(name), std::move(text)));
+  // a file declaring an 8-bit encoding (`# -*- coding: latin-1 -*-`) is held in UTF-8
+  return std::shared_ptr<const SourceFile>(new SourceFile(std::move(name), decodeSource(std::move(text))));
 }
 
 std::string_view SourceFile::line(int line) const {

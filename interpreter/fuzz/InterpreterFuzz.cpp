@@ -36,7 +36,7 @@ void run(const std::shared_ptr<const SourceFile>& file) {
   testing::FakeHandler handler(false);
   InterpreterOptions options;
   options.whileIterationCap = 100;
-  options.stepBudget = 1000;
+  options.operationBudget = 1000;
   options.maxSequenceLength = 1000;
   options.maxStringLength = 10000;
   Interpreter interpreter(handler, sink, options);

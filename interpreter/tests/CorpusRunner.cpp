@@ -6,6 +6,8 @@
 //   # expect-call: CMD TARGET  one command call with its assignment target, in order (all calls
 //                              are checked when any expect-call line is present)
 //   # expect-status: completed|finished|syntax-error|failed
+//   # budget: operations=N | memory=MIB   the evaluation budget of the run (default: the
+//                                         interpreter's)
 // Modes: `FILE...` checks expectations; `--roundtrip PATH...` checks that every .comm under the
 // paths (found when the test runs, so files added later are covered) parses, unless it is
 // malformed on purpose, and re-parses to the same tree after pretty-printing; `--no-crash PATH...` runs every
@@ -37,6 +39,7 @@ struct Expectations {
   std::vector<std::string> output;
   std::vector<std::string> calls;
   std::string status;
+  InterpreterOptions options;
 };
 
 std::string trim(std::string s) {
@@ -81,6 +84,16 @@ Expectations readExpectations(const SourceFile& file) {
     });
     take("expect-call", [&](const std::string& r) { e.calls.push_back(trim(r)); });
     take("expect-status", [&](const std::string& r) { e.status = trim(r); });
+    take("budget", [&](const std::string& r) {
+      const std::string setting = trim(r);
+      const std::size_t eq = setting.find('=');
+      const long long value = std::stoll(setting.substr(eq + 1));
+      if (setting.rfind("operations", 0) == 0) {
+        e.options.operationBudget = value;
+      } else {
+        e.options.memoryBudget = value << 20;
+      }
+    });
   }
   return e;
 }
@@ -104,7 +117,7 @@ bool checkFile(const std::string& path) {
   Expectations expected = readExpectations(*file);
   RecordingSink sink;
   FakeHandler handler;
-  Interpreter interpreter(handler, sink);
+  Interpreter interpreter(handler, sink, expected.options);
   for (const auto& name : fakeCommandNames()) {
     interpreter.defineCommand(name);
   }
@@ -293,7 +306,7 @@ bool noCrash(const std::string& path) {
   FakeHandler handler(false);
   InterpreterOptions options;
   options.whileIterationCap = 1000;
-  options.stepBudget = 200000;
+  options.operationBudget = 200000;
   options.maxSequenceLength = 100000;
   options.maxStringLength = 1000000;
   Interpreter interpreter(handler, sink, options);

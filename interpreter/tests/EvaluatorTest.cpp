@@ -181,9 +181,9 @@ TEST(Evaluator, SizeLimitsAreEnforced) {
   ASSERT_NE(r.first(Severity::Fatal), nullptr);
   EXPECT_EQ(r.first(Severity::Fatal)->id, "LANG_SIZE");
   InterpreterOptions options;
-  options.stepBudget = 1000;
+  options.operationBudget = 1000;
   StudyRun budget("for i in range(100000):\n    pass\n", options);
-  EXPECT_EQ(budget.first(Severity::Fatal)->id, "LANG_LIMIT");
+  EXPECT_EQ(budget.first(Severity::Fatal)->id, "LANG_BUDGET");
 }
 
 TEST(Evaluator, DeepRecursionThroughExpressionsIsCaught) {

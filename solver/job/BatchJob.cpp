@@ -282,7 +282,15 @@ std::unique_ptr<Session> runStudy(const JobSpec& spec, const fs::path& work, std
     for (const auto& d : spec.data) {
       session->declareUnitOrigin(d.unit, d.source);
     }
-    Interpreter interpreter(*session, *session);
+    for (const auto& [unit, destination] : spec.results) {
+      session->declareResultUnit(unit);
+    }
+    InterpreterOptions budget;
+    if (options.maxOperations > 0) {
+      budget.operationBudget = options.maxOperations;
+    }
+    budget.memoryBudget = options.maxMemoryBytes;
+    Interpreter interpreter(*session, *session, budget);
     for (const auto& name : catalog.commandNames()) {
       interpreter.defineCommand(name);
     }

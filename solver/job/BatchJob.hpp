@@ -18,8 +18,10 @@ struct RunOptions {
   std::filesystem::path outputDirectory; // empty: relative result paths are relative to the export
   bool referenceOnly = false;            // VALE_CALC lines are information only
   bool keepWorkDirectory = false;
-  bool echo = true;        // copy the message file to standard output as it is written
-  std::string commandLine; // for the message file header
+  bool echo = true;             // copy the message file to standard output as it is written
+  std::string commandLine;      // for the message file header
+  long long maxOperations = 0;  // evaluation budget of the command files (0: the default)
+  long long maxMemoryBytes = 0; // (0: the default)
 };
 
 struct JobResult {

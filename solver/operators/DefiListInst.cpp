@@ -69,7 +69,7 @@ Value runDefiListInst(OperatorCall& call) {
       throw UserError(Diagnostic::fatal("LIST_INST_2",
                                         fmt::format("the instants must increase strictly: {} follows {}",
                                                     list->instants[i], list->instants[i - 1]),
-                                        def.location()));
+                                        def.locationOf(def.has("VALE") ? "VALE" : "LIST_INST")));
     }
   }
   for (const KeywordTree& e : kw.occurrences("ECHEC")) {

@@ -50,6 +50,17 @@ Value runDefiListReel(OperatorCall& call) {
   std::vector<double> values;
   if (kw.has("VALE")) {
     values = kw.reals("VALE");
+    for (std::size_t i = 1; i < values.size(); ++i) {
+      if (!(values[i] > values[i - 1])) { // also refuses nan
+        throw UserError(Diagnostic::fatal("LIST_4",
+                                          fmt::format("VALE must increase strictly: value {} ({}) follows "
+                                                      "value {} ({})",
+                                                      i + 1, values[i], i, values[i - 1]),
+                                          kw.locationOf("VALE"))
+                            .withNote("code_aster refuses a list of reals that does not increase; sort the "
+                                      "values and remove the repeated ones"));
+      }
+    }
   } else {
     values.push_back(kw.real("DEBUT"));
     for (const KeywordTree& interval : kw.occurrences("INTERVALLE")) {

@@ -5,6 +5,7 @@
 #include "solver/model/Material.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 
+#include <cmath>
 #include <fmt/format.h>
 
 namespace stella {
@@ -17,6 +18,47 @@ void refuse(const KeywordTree& kw, const std::string& name) {
                                       kw.locationOf(name))
                         .withNote("available: ELAS (E, NU, RHO, ALPHA) and ECRO_LINE (D_SIGM_EPSI, SY)"));
   }
+}
+
+// A material value that is not a finite number (float('nan'), float('inf'), 1e400) would only
+// show later as a singular system blamed on the supports: refused here, at the keyword.
+double finiteReal(const KeywordTree& kw, const std::string& factor, const std::string& name) {
+  const double value = kw.real(name);
+  if (!std::isfinite(value)) {
+    throw UserError(
+        Diagnostic::fatal("MATER_4", fmt::format("{} {} = {} is not a finite number", factor, name, value),
+                          kw.locationOf(name))
+            .withNote("give a finite value (a literal above about 1.8e308 such as 1e400 is inf)"));
+  }
+  return value;
+}
+
+void refuseOutside(const KeywordTree& kw, const std::string& name, double value, bool valid,
+                   const std::string& expected) {
+  if (!valid) {
+    throw UserError(Diagnostic::fatal("MATER_2",
+                                      fmt::format("ELAS {} = {}: {} is expected", name, value, expected),
+                                      kw.locationOf(name))
+                        .withNote("check the value and its unit"));
+  }
+}
+
+ElasticMaterial readElastic(const KeywordTree& elas) {
+  ElasticMaterial e;
+  e.youngModulus = finiteReal(elas, "ELAS", "E");
+  e.poissonRatio = finiteReal(elas, "ELAS", "NU");
+  refuseOutside(elas, "E", e.youngModulus, e.youngModulus > 0.0, "E > 0");
+  refuseOutside(elas, "NU", e.poissonRatio, e.poissonRatio > -1.0 && e.poissonRatio < 0.5,
+                "-1 < NU < 0.5 (the elastic energy is positive only there)");
+  if (elas.has("RHO")) {
+    const double density = finiteReal(elas, "ELAS", "RHO");
+    refuseOutside(elas, "RHO", density, density >= 0.0, "RHO >= 0");
+    e.density = density;
+  }
+  if (elas.has("ALPHA")) {
+    e.expansion = finiteReal(elas, "ELAS", "ALPHA");
+  }
+  return e;
 }
 
 Value runDefiMateriau(OperatorCall& call) {
@@ -34,26 +76,12 @@ Value runDefiMateriau(OperatorCall& call) {
                                         elas.location())
                           .withNote("give E and NU"));
     }
-    ElasticMaterial e;
-    e.youngModulus = elas.real("E");
-    e.poissonRatio = elas.real("NU");
-    if (e.youngModulus <= 0.0 || e.poissonRatio >= 0.5) {
-      throw UserError(Diagnostic::fatal(
-          "MATER_2",
-          fmt::format("ELAS needs E > 0 and NU < 0.5 (got E = {}, NU = {})", e.youngModulus, e.poissonRatio),
-          elas.location()));
-    }
-    if (elas.has("RHO")) {
-      e.density = elas.real("RHO");
-    }
-    if (elas.has("ALPHA")) {
-      e.expansion = elas.real("ALPHA");
-    }
-    material->elastic = e;
+    material->elastic = readElastic(elas);
   }
   if (kw.has("ECRO_LINE")) {
     const KeywordTree& ecro = kw.occurrences("ECRO_LINE").front();
-    LinearHardeningMaterial h{ecro.real("D_SIGM_EPSI"), ecro.real("SY")};
+    LinearHardeningMaterial h{finiteReal(ecro, "ECRO_LINE", "D_SIGM_EPSI"),
+                              finiteReal(ecro, "ECRO_LINE", "SY")};
     if (h.yieldStress <= 0.0 || h.tangentModulus < 0.0 ||
         (material->elastic && h.tangentModulus >= material->elastic->youngModulus)) {
       throw UserError(

@@ -49,8 +49,9 @@ std::vector<int> selectedSteps(const Result& r, const KeywordTree& occ) {
 }
 
 struct Target {
-  std::filesystem::path path;
+  std::filesystem::path path; // empty: the text result file (unit 8) or the message file (unit 6)
   std::string format;
+  bool messageFile = false;
 };
 
 // GROUP_NO / GROUP_MA (FORMAT='RESULTAT'): nodal fields are printed on the nodes of GROUP_NO and
@@ -154,7 +155,9 @@ void writeOccurrence(OperatorCall& call, const Target& target, const KeywordTree
     writeGmshResult(target.path, *mesh, r, out);
   } else if (target.format == "RESULTAT") {
     const std::string text = r != nullptr ? formatResultTables(*mesh, *r, out) : std::string();
-    if (target.path.empty()) {
+    if (target.messageFile) {
+      call.session.message() << text;
+    } else if (target.path.empty()) {
       call.session.result() << text;
     } else {
       std::ofstream f(target.path, std::ios::app);
@@ -225,7 +228,8 @@ Value runImprResu(OperatorCall& call) {
                           : target.format == "VTU"  ? 81
                                                     : 8;
   const int unit = static_cast<int>(kw.integerOr("UNITE", defaultUnit));
-  if (!(target.format == "RESULTAT" && unit == 8)) {
+  target.messageFile = target.format == "RESULTAT" && unit == 6;
+  if (!(target.format == "RESULTAT" && (unit == 8 || unit == 6))) {
     target.path = call.session.unitPath(unit, kw.locationOf("UNITE"), false);
   }
   std::error_code ec;

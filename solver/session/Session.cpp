@@ -114,6 +114,22 @@ std::string callHeader(const std::string& target, const std::string& command) {
   return target.empty() ? command + "(" : target + " = " + command + "(";
 }
 
+// An error an operator reports elsewhere than in its own call (a FORMULE it evaluates, defined
+// earlier in the file) also names the command that was running.
+UserError withCallingCommand(const UserError& e, const std::string& command, const CallArguments& args) {
+  std::vector<Diagnostic> ds = e.diagnostics();
+  const SourceLocation& call = args.callLocation;
+  const int lastLine = args.closeLocation.known() ? args.closeLocation.line : call.line;
+  for (auto& d : ds) {
+    const bool inCall =
+        d.location.file == call.file && d.location.line >= call.line && d.location.line <= lastLine;
+    if (call.known() && !inCall) {
+      d.withNote("while running " + command + " at " + call.str());
+    }
+  }
+  return UserError(std::move(ds));
+}
+
 } // namespace
 
 Session::Session(const Catalog& catalog, std::ostream& message, std::ostream& result, SessionOptions options)
@@ -217,6 +233,12 @@ Value Session::callCommand(const std::string& command, const CallArguments& args
   if (stopRequested() && (options_.executeOperators || runsWhenChecking(command))) {
     throw UserError(stopDiagnostic("before " + command, args.callLocation));
   }
+  try {
+    checkOutputUnit(command, call.keywords, args.callLocation);
+  } catch (const UserError& e) {
+    throw asSyntax(e);
+  }
+
   ++commandCount_;
   const std::string location = args.callLocation.str();
   message_ << "\n  # " << std::string(70, '-') << "\n"
@@ -234,7 +256,11 @@ Value Session::callCommand(const std::string& command, const CallArguments& args
     const std::string resultName = call.reused ? call.reused->name : target;
     OperatorCall opCall{*this,           command,     call.keywords,    resultName,
                         call.resultType, call.reused, args.callLocation};
-    result = runOperator(op, opCall);
+    try {
+      result = runOperator(op, opCall);
+    } catch (const UserError& e) {
+      throw withCallingCommand(e, command, args);
+    }
   } else if (!call.resultType.empty()) {
     auto c = std::make_shared<Concept>();
     c->name = call.reused ? call.reused->name : target;

@@ -21,6 +21,7 @@ namespace stella {
 struct OperatorCall;
 
 class Catalog;
+class KeywordTree;
 
 struct SessionOptions {
   // false for `stella check`: validate only, except the operators that only compute values of the
@@ -72,6 +73,13 @@ public:
   // the unit is unknown and `mustExist`.
   std::filesystem::path unitPath(int unit, const SourceLocation& at, bool forReading) const;
   const std::map<int, std::filesystem::path>& units() const { return units_; }
+  // The units whose files come back from the run (the export's R lines, the quick run's 6, 8,
+  // 80, 81). Once any is declared, a command writing to another unit is refused (UNIT_2): its
+  // file would be lost (OutputUnits.cpp).
+  void declareResultUnit(int unit);
+  // IMPR_RESU / IMPR_TABLE: the unit they write is declared, and holds one format per run
+  // (UNIT_3); checked before the command runs, so `stella check` reports it too.
+  void checkOutputUnit(const std::string& command, const KeywordTree& keywords, const SourceLocation& call);
   // Units a command opened (the export's data files the study never opened get an alarm only
   // when they are also missing).
   const std::vector<int>& openedUnits() const { return opened_; }
@@ -118,6 +126,8 @@ private:
   SessionOptions options_;
   std::map<int, std::filesystem::path> units_;
   std::map<int, std::filesystem::path> unitOrigins_;
+  std::vector<int> resultUnits_;
+  std::map<int, std::pair<std::string, SourceLocation>> unitFormats_; // unit -> format, first writer
   UserError withUserPaths(const UserError& e) const;
   UserError keepPartialResult(const UserError& e);
   Value runOperator(Value (*op)(OperatorCall&), OperatorCall& opCall);

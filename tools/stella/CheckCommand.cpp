@@ -51,7 +51,19 @@ int check(const CheckArguments& args) {
     options.executeOperators = false;
     const Catalog& catalog = Catalog::builtin();
     Session session(catalog, silent, silent, options);
-    Interpreter interpreter(session, sink);
+    // the result units of a quick run (`stella run FILE.comm`), and those given with --unit
+    for (int unit : {6, 8, 80, 81}) {
+      session.declareResultUnit(unit);
+    }
+    for (int unit : args.units) {
+      session.declareResultUnit(unit);
+    }
+    InterpreterOptions budget;
+    if (args.maxOperations > 0) {
+      budget.operationBudget = args.maxOperations;
+    }
+    budget.memoryBudget = args.maxMemoryMiB << 20;
+    Interpreter interpreter(session, sink, budget);
     for (const auto& name : catalog.commandNames()) {
       interpreter.defineCommand(name);
     }

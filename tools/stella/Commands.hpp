@@ -16,7 +16,10 @@ struct RunArguments {
   bool referenceOnly = false;
   bool keepWork = false;
   bool quiet = false;
+  bool confine = false; // refuse data and result paths outside the study's folder
   std::string commandLine;
+  long long maxOperations = 0; // the evaluation budget (0: the default, doc/language.md)
+  long long maxMemoryMiB = 0;
 };
 int run(const RunArguments& args);
 
@@ -25,6 +28,9 @@ struct CheckArguments {
   bool syntaxOnly = false;
   bool dumpTokens = false;
   bool dumpAst = false;
+  std::vector<int> units; // result units declared besides the quick run's 6, 8, 80, 81
+  long long maxOperations = 0;
+  long long maxMemoryMiB = 0;
 };
 int check(const CheckArguments& args);
 

@@ -2,6 +2,7 @@
 
 #include "Commands.hpp"
 #include "solver/job/BatchJob.hpp"
+#include "solver/job/Confine.hpp"
 #include "solver/nonlinear/ProgressLine.hpp"
 #include "solver/session/ExceptionDiagnostic.hpp"
 
@@ -54,6 +55,8 @@ int run(const RunArguments& args) {
     setProgressTerminal(&std::cout);
   }
   options.commandLine = args.commandLine;
+  options.maxOperations = args.maxOperations;
+  options.maxMemoryBytes = args.maxMemoryMiB << 20;
 
   std::filesystem::path target(args.target);
   try {
@@ -63,7 +66,11 @@ int run(const RunArguments& args) {
         std::cerr << "stella: --unit goes with a .comm file; a .export declares its units itself\n";
         return exitUsage;
       }
-      job = runExport(Export::read(target), options);
+      Export study = Export::read(target);
+      if (args.confine) {
+        confineExport(study, options.outputDirectory);
+      }
+      job = runExport(study, options);
     } else {
       std::map<int, std::filesystem::path> units;
       for (const auto& u : args.units) {
@@ -75,6 +82,9 @@ int run(const RunArguments& args) {
           return exitUsage;
         }
         units[unit] = path;
+      }
+      if (args.confine) {
+        confineCommandFile(target, units, options.outputDirectory);
       }
       job = runCommandFile(target, units, options);
     }

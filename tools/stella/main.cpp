@@ -59,6 +59,13 @@ int main(int argc, char** argv) {
                 "count only reference lines of TEST_RESU; VALE_CALC lines are information");
   run->add_flag("--keep-work", runArgs.keepWork, "keep the work directory after a successful run");
   run->add_flag("-q,--quiet", runArgs.quiet, "do not copy the message file to standard output");
+  run->add_flag("--confine", runArgs.confine,
+                "refuse any data or result path that resolves outside the study's folder");
+  const char* operationsHelp = "evaluation budget of the command files: operations (default 1000000000)";
+  const char* memoryHelp = "evaluation budget: MiB the command files' values may hold (default 2048, at "
+                           "most half the RAM)";
+  run->add_option("--max-operations", runArgs.maxOperations, operationsHelp)->check(CLI::PositiveNumber);
+  run->add_option("--max-memory", runArgs.maxMemoryMiB, memoryHelp)->check(CLI::PositiveNumber);
 
   stella::cli::CheckArguments checkArgs;
   auto* check = app.add_subcommand("check", "Validate a command file without running it");
@@ -66,6 +73,12 @@ int main(int argc, char** argv) {
   check->add_flag("--syntax", checkArgs.syntaxOnly, "parse only");
   check->add_flag("--dump-tokens", checkArgs.dumpTokens, "print the tokens");
   check->add_flag("--dump-ast", checkArgs.dumpAst, "print the syntax tree");
+  check
+      ->add_option("--unit", checkArgs.units,
+                   "a result unit the study's export declares (besides 6, 8, 80, 81)")
+      ->check(CLI::Range(1, 99));
+  check->add_option("--max-operations", checkArgs.maxOperations, operationsHelp)->check(CLI::PositiveNumber);
+  check->add_option("--max-memory", checkArgs.maxMemoryMiB, memoryHelp)->check(CLI::PositiveNumber);
 
   std::string fmtFile;
   bool fmtInPlace = false;

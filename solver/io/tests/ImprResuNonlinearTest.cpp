@@ -179,7 +179,10 @@ TEST(ImprResuNonlinear, MedOfStatNonLineReadByMeshioAndH5py) {
   const auto dir = testing::tempDir("impr_snl");
   writeMedMesh(dir / "bar.med", volumeWithNodeGroups({CellType::HEXA8, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}}),
                "BAR");
-  const auto r = testing::runComm(dir, "bar", barComm, {{20, dir / "bar.med"}, {80, dir / "out.med"}});
+  // unit 82 (the deformed mesh, read back from the work directory) is declared: a command may
+  // write only to a declared unit
+  const auto r = testing::runComm(dir, "bar", barComm,
+                                  {{20, dir / "bar.med"}, {80, dir / "out.med"}, {82, dir / "deformed.med"}});
   ASSERT_EQ(r.diagnostic, JobDiagnostic::Ok) << r.message;
   EXPECT_EQ(
       testing::runPython(dir, barCheck, (dir / "bar.rmed").string() + " " + (dir / "bar.resu").string()), 0);
