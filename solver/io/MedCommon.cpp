@@ -5,6 +5,7 @@
 #include "solver/io/MeshFileError.hpp"
 
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <hdf5.h>
 #include <unistd.h>
 
@@ -121,7 +122,7 @@ void silenceHdf5Errors() {
   std::call_once(once, [] { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); });
 }
 
-MedFile::MedFile(const std::filesystem::path& file, Mode mode) : path_(file) {
+MedFile::MedFile(const std::filesystem::path& file, Mode mode, std::array<int, 3> version) : path_(file) {
   silenceHdf5Errors();
   const std::string p = file.string();
   std::error_code ec;
@@ -149,11 +150,27 @@ MedFile::MedFile(const std::filesystem::path& file, Mode mode) : path_(file) {
   const med_access_mode access = mode == Mode::Read     ? MED_ACC_RDONLY
                                  : mode == Mode::Create ? MED_ACC_CREAT
                                                         : MED_ACC_RDWR;
-  fid_ = MEDfileOpen(p.c_str(), access);
+  fid_ = mode == Mode::Create && version[0] > 0
+             ? MEDfileVersionOpen(p.c_str(), access, version[0], version[1], version[2])
+             : MEDfileOpen(p.c_str(), access);
   if (fid_ < 0) {
     throwFileError(mode == Mode::Read ? "MESHFILE_4" : "MESHFILE_7", file,
                    mode == Mode::Read ? "the MED library cannot open the file"
                                       : "the file cannot be created");
+  }
+  if (mode == Mode::Append && version[0] > 0) {
+    med_int major = 0;
+    med_int minor = 0;
+    med_int release = 0;
+    check(MEDfileNumVersionRd(fid_, &major, &minor, &release), "MEDfileNumVersionRd", "append");
+    if (major != version[0] || minor != version[1]) {
+      MEDfileClose(fid_);
+      fid_ = -1;
+      throwFileError("MESHFILE_7", file,
+                     fmt::format("the file is in MED {}.{}, VERSION_MED asks {}.{}.{}: one file holds one "
+                                 "version (write to another unit, or give the same VERSION_MED)",
+                                 major, minor, version[0], version[1], version[2]));
+    }
   }
 }
 

@@ -287,7 +287,7 @@ std::string medFieldName(const std::string& resultName, const std::string& field
 void writeMedResult(const std::filesystem::path& file, const Mesh& mesh, const std::string& meshName,
                     const Result* result, const ResultOutput& output, bool append) {
   const StderrSilencer quiet;
-  const MedFile f(file, append ? MedFile::Mode::Append : MedFile::Mode::Create);
+  const MedFile f(file, append ? MedFile::Mode::Append : MedFile::Mode::Create, output.medVersion);
   const std::string name = !meshName.empty() ? meshName : (!mesh.name().empty() ? mesh.name() : "MAIL");
   if (!append || !meshInFile(f, name)) {
     writeMedMeshInto(f, mesh, name);
