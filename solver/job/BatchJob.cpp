@@ -241,6 +241,7 @@ JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
 
   SessionCounts counts;
   if (session) {
+    session->reportDeferred(); // the run stopped before FIN: the held alarms still count
     if (internalFailure) {
       session->noteFailure(FailureKind::Abort);
     }
