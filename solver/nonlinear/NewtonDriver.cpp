@@ -344,9 +344,8 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
         n > 0 ? system_.dofs().describe(static_cast<int>(where), *system_.model().mesh) : "-";
     const bool ok =
         test.ok && (settings_.resiGlobMaxi <= 0.0 || maxi <= settings_.resiGlobMaxi) && std::isfinite(maxi);
-    log_ << fmt::format("   | {:4d} | {:14.6e} | {:14.6e} | {:<23} | {:<9} |{}{}\n", iter, rela, maxi,
-                        at, matrixNote,
-                        rhoColumn ? fmt::format(" {:<8.4g} |", rho) : std::string(),
+    log_ << fmt::format("   | {:4d} | {:14.6e} | {:14.6e} | {:<23} | {:<9} |{}{}\n", iter, rela, maxi, at,
+                        matrixNote, rhoColumn ? fmt::format(" {:<8.4g} |", rho) : std::string(),
                         constraint_ != nullptr ? " " + constraint_->iterationNote() : std::string());
     out.iterations = iter;
     out.resiRela = rela;

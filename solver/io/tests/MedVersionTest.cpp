@@ -1,8 +1,8 @@
 // IMPR_RESU FORMAT='MED' writes the MED format that VERSION_MED asks (3.3.1, 4.0.0 or 4.1.0, the
-// catalogue's values; 3.3.1 by default, as code_aster): h5py reads the version from the file's INFOS_GENERALES, and meshio (the
-// common Python reader) reads each file's DEPL, compared with the closed form. Before, every
-// file was MED 4.1 whatever VERSION_MED said. Appending to a unit that holds another version is
-// refused (one file holds one version).
+// catalogue's values; 3.3.1 by default, as code_aster): h5py reads the version from the file's
+// INFOS_GENERALES, and meshio (the common Python reader) reads each file's DEPL, compared with the closed
+// form. Before, every file was MED 4.1 whatever VERSION_MED said. Appending to a unit that holds another
+// version is refused (one file holds one version).
 //
 // Problem: a 2 x 1 x 1 bar of two HEXA8, E = 200000, NU = 0.3, symmetry planes x = 0, y = 0,
 // z = 0 and DX = 2e-3 on x = 2: a uniform state, DX = 1e-3 x, DY = -0.3e-3 y, DZ = -0.3e-3 z,
