@@ -32,6 +32,10 @@ stella_require(GTest_FOUND "GoogleTest" libgtest-dev)
 find_package(HDF5 QUIET COMPONENTS C)
 stella_require(HDF5_FOUND "HDF5" libhdf5-dev)
 
+# zlib compresses the appended data of the VTU result files (IMPR_RESU FORMAT='VTU').
+find_package(ZLIB QUIET)
+stella_require(ZLIB_FOUND "zlib" zlib1g-dev)
+
 find_path(MED_INCLUDE_DIR med.h PATH_SUFFIXES med)
 find_library(MED_LIBRARY NAMES medC)
 if(MED_INCLUDE_DIR AND MED_LIBRARY)

@@ -9,6 +9,7 @@
 
 #include <dlfcn.h>
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <hdf5.h>
 #include <unistd.h>
 
@@ -186,7 +187,8 @@ void silenceHdf5Errors() {
   });
 }
 
-MedFile::MedFile(const std::filesystem::path& file, Mode mode, std::filesystem::path shown)
+MedFile::MedFile(const std::filesystem::path& file, Mode mode, std::filesystem::path shown,
+                 std::array<int, 3> version)
     : path_(file), shown_(shown.empty() ? file : std::move(shown)), mode_(mode) {
   silenceHdf5Errors();
   const std::string p = file.string();
@@ -216,13 +218,29 @@ MedFile::MedFile(const std::filesystem::path& file, Mode mode, std::filesystem::
                                  : mode == Mode::Create ? MED_ACC_CREAT
                                                         : MED_ACC_RDWR;
   errno = 0;
-  fid_ = MEDfileOpen(p.c_str(), access);
+  fid_ = mode == Mode::Create && version[0] > 0
+             ? MEDfileVersionOpen(p.c_str(), access, version[0], version[1], version[2])
+             : MEDfileOpen(p.c_str(), access);
   if (fid_ < 0) {
     if (mode == Mode::Read) {
       throwFileError("MESHFILE_4", shown_, "the MED library cannot open the file");
     }
     mode_ = mode;
     check(-1, "MEDfileOpen", "creating the file");
+  }
+  if (mode == Mode::Append && version[0] > 0) {
+    med_int major = 0;
+    med_int minor = 0;
+    med_int release = 0;
+    check(MEDfileNumVersionRd(fid_, &major, &minor, &release), "MEDfileNumVersionRd", "append");
+    if (major != version[0] || minor != version[1]) {
+      MEDfileClose(fid_);
+      fid_ = -1;
+      throwFileError("MESHFILE_7", file,
+                     fmt::format("the file is in MED {}.{}, VERSION_MED asks {}.{}.{}: one file holds one "
+                                 "version (write to another unit, or give the same VERSION_MED)",
+                                 major, minor, version[0], version[1], version[2]));
+    }
   }
 }
 

@@ -15,6 +15,7 @@ using MPI_Info = int;
 #endif
 #include <med.h>
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <span>
@@ -32,12 +33,17 @@ const std::vector<CellType>& medCellOrder();
 
 // A MED file open for reading or writing; closed by the destructor. Opening failures raise
 // MESHFILE_1 (missing) or MESHFILE_4 (not an HDF5/MED file) naming the file.
+// `version` (IMPR_RESU VERSION_MED: major, minor, release; {0, 0, 0} = the library's own) is the
+// MED format a created file is written in (the library records its own release number of that
+// minor version); appending to a file of another major.minor raises MESHFILE_7.
 class MedFile {
 public:
   enum class Mode { Read, Create, Append };
   // `shown`: the path the messages give (a file written under a temporary name is named by its
   // final one); empty: `file`.
-  MedFile(const std::filesystem::path& file, Mode mode, std::filesystem::path shown = {});
+  MedFile(const std::filesystem::path& file, Mode mode, std::filesystem::path shown = {},
+          std::array<int, 3> version = {0, 0, 0});
+  // `version`: the MED version a created file is written in (MEDfileVersionOpen); {0, 0, 0}: the library's.
   ~MedFile();
   MedFile(const MedFile&) = delete;
   MedFile& operator=(const MedFile&) = delete;

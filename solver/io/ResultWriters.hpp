@@ -1,7 +1,7 @@
 #pragma once
 // Writers of results (IMPR_RESU): MED (mesh + nodal, per-cell, Gauss-point and cell-node fields
 // with component names, one MED time step per stored step: numdt = NUME_ORDRE, dt = INST),
-// VTU/PVD (nodal and per-cell fields; ParaView opens them with no plugin), Gmsh .msh 2.2 with
+// VTU/PVD (nodal and per-cell fields, binary zlib; ParaView opens them with no plugin), Gmsh .msh 2.2 with
 // $NodeData/$ElementData, and FORMAT='RESULTAT' text tables.
 //
 // MED field names follow code_aster: the result name padded to 8 characters with '_' then the
@@ -11,10 +11,13 @@
 
 #include "solver/database/Field.hpp"
 #include "solver/database/Result.hpp"
+#include "solver/io/RealEditDescriptor.hpp"
 #include "solver/mesh/Mesh.hpp"
 
+#include <array>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +37,11 @@ struct ResultOutput {
   // per-point fields) whose rows are printed; empty = every one. The other formats write all.
   std::vector<bool> nodes;
   std::vector<bool> cells;
+  // FORMAT_R of FORMAT='RESULTAT': the edit descriptor of the printed values (unset: 1PE13.6).
+  std::optional<RealEditDescriptor> valueFormat;
+  // VERSION_MED of FORMAT='MED': major, minor, release of the MED format written ({0, 0, 0}: the
+  // library's own).
+  std::array<int, 3> medVersion{0, 0, 0};
 };
 
 // The code_aster MED field name: RESU____DEPL.
@@ -47,7 +55,8 @@ void writeMedResult(const std::filesystem::path& file, const Mesh& mesh, const s
 // One .vtu per step (<stem>_<NUME_ORDRE>.vtu beside `pvdFile`) and the .pvd collection with the
 // times; nodal fields as point data, per-cell fields as cell data, Gauss-point and cell-node
 // fields as cell data holding the mean of each cell's points (one array per field, its
-// components as the tuple; partial components as 0). Returns the files written.
+// components as the tuple). Binary appended data compressed with zlib; NaN where a field has no
+// value; DX, DY fields get DZ = 0 (3-vectors). Returns the files written.
 std::vector<std::filesystem::path> writeVtuResult(const std::filesystem::path& pvdFile, const Mesh& mesh,
                                                   const Result* result, const ResultOutput& output);
 

@@ -361,6 +361,7 @@ JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
   SessionCounts counts;
   CopyOutcome copied;
   if (session) {
+    session->reportDeferred(); // the run stopped before FIN: the held alarms still count
     try {
       closeSession(*session, spec, missing, mess);
       mess << "\n";

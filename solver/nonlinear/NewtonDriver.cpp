@@ -391,7 +391,7 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
                                              {settings_.resiGlobMaxi > 0.0, maxi <= settings_.resiGlobMaxi}},
                                             settings_.verif);
     log_ << fmt::format(
-        "   | {:4d} | {:14.6e} | {:14.6e} | {:<23} | {:<9} |{}{}{}\n", iter, rela, maxi, at.substr(0, 23),
+        "   | {:4d} | {:14.6e} | {:14.6e} | {:<23} | {:<9} |{}{}{}\n", iter, rela, maxi, at,
         matrixNote, rhoColumn ? fmt::format(" {:<8.4g} |", rho) : std::string(),
         columns_ != nullptr ? columns_->row(start.displacement + du, end.points) : std::string(),
         constraint_ != nullptr ? " " + constraint_->iterationNote() : std::string());

@@ -4,6 +4,7 @@
 #include "interpreter/Diagnostics.hpp"
 #include "solver/contact/ContactDefinition.hpp"
 #include "solver/model/Model.hpp"
+#include "solver/operators/CoincidentNodesAlarm.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 
@@ -50,6 +51,7 @@ Value runDefiContact(OperatorCall& call) {
   if (def->settings.formulation != contact::Formulation::LiaisonUnil) {
     checkNodesCarryDofs(*def, *model);
   }
+  dropPairsJoinedByContact(call.session, *def);
   static const char* formulations[] = {"DISCRETE", "CONTINUE", "LIAISON_UNIL"};
   call.session.message() << fmt::format("   contact {}: formulation {}, {} zone(s){}\n", call.resultName,
                                         formulations[static_cast<int>(def->settings.formulation)],

@@ -1,4 +1,5 @@
-// FIN: closes the session; the rest of the command file is ignored.
+// FIN: reports the alarms held until the end of the study (Session::defer), then closes the
+// session; the rest of the command file is ignored.
 
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
@@ -7,6 +8,7 @@ namespace stella {
 
 namespace {
 Value runFin(OperatorCall& call) {
+  call.session.reportDeferred();
   call.session.markFinished();
   return Value();
 }

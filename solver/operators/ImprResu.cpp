@@ -15,7 +15,11 @@
 #include "solver/operators/MeshOperatorUtil.hpp"
 #include "solver/session/Session.hpp"
 
+#include <fmt/format.h>
+
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 
 namespace stella {
@@ -48,10 +52,25 @@ std::vector<int> selectedSteps(const Result& r, const KeywordTree& occ) {
   return numbers;
 }
 
+// FORMAT_R: the Fortran edit descriptor of the printed values ('1PE21.14' by default).
+RealEditDescriptor valueFormat(const KeywordTree& occ) {
+  const std::string text = occ.text("FORMAT_R");
+  const auto d = parseRealEditDescriptor(text);
+  if (!d) {
+    throw UserError(Diagnostic::fatal("IMPR_RESU_5",
+                                      "FORMAT_R='" + text + "' is not an edit descriptor stella writes",
+                                      occ.locationOf("FORMAT_R"))
+                        .withNote("give [kP]Ew.d, Dw.d, ESw.d or Fw.d, e.g. FORMAT_R='1PE12.5' or 'F10.3' "
+                                  "(G descriptors are not implemented yet)"));
+  }
+  return *d;
+}
+
 struct Target {
   std::filesystem::path path; // empty: the text result file (unit 8) or the message file (unit 6)
   std::string format;
   bool messageFile = false;
+  std::array<int, 3> medVersion{0, 0, 0}; // FORMAT='MED'
 };
 
 // GROUP_NO / GROUP_MA (FORMAT='RESULTAT'): nodal fields are printed on the nodes of GROUP_NO and
@@ -107,6 +126,15 @@ void restrictToGroups(OperatorCall& call, const Target& target, const KeywordTre
   }
 }
 
+// VERSION_MED ('3.3.1', '4.0.0', '4.1.0': the catalogue's values) as {major, minor, release}.
+std::array<int, 3> medVersion(const KeywordTree& kw) {
+  const std::string text = kw.text("VERSION_MED");
+  std::array<int, 3> v{0, 0, 0};
+  const int read = std::sscanf(text.c_str(), "%d.%d.%d", &v[0], &v[1], &v[2]);
+  STELLA_ASSERT(read == 3, "VERSION_MED is not major.minor.release");
+  return v;
+}
+
 void writeOccurrence(OperatorCall& call, const Target& target, const KeywordTree& occ, bool& fileStarted) {
   std::shared_ptr<const Mesh> mesh;
   std::shared_ptr<Result> result;
@@ -144,6 +172,10 @@ void writeOccurrence(OperatorCall& call, const Target& target, const KeywordTree
       }
     }
   }
+  if (target.format == "RESULTAT") {
+    out.valueFormat = valueFormat(occ);
+  }
+  out.medVersion = target.medVersion;
   out.gaussPoints = rigiGaussPoints;
   restrictToGroups(call, target, occ, *mesh, out);
   const Result* r = result.get();
@@ -227,10 +259,21 @@ Value runImprResu(OperatorCall& call) {
                           : target.format == "GMSH" ? 37
                           : target.format == "VTU"  ? 81
                                                     : 8;
+  if (target.format == "GMSH" && kw.real("VERSION") != 2.2) {
+    // The catalogue refuses 1.0 and 1.2 (hors_perimetre): this guards a catalogue change.
+    throw UserError(Diagnostic::fatal("IMPR_RESU_1",
+                                      fmt::format("IMPR_RESU FORMAT='GMSH' VERSION={} is not implemented yet",
+                                                  kw.real("VERSION")),
+                                      kw.locationOf("VERSION"))
+                        .withNote("stella writes VERSION=2.2: a .msh 2.2 file with $NodeData/$ElementData"));
+  }
   const int unit = static_cast<int>(kw.integerOr("UNITE", defaultUnit));
   target.messageFile = target.format == "RESULTAT" && unit == 6;
   if (!(target.format == "RESULTAT" && (unit == 8 || unit == 6))) {
     target.path = call.session.unitPath(unit, kw.locationOf("UNITE"), false);
+  }
+  if (target.format == "MED") {
+    target.medVersion = medVersion(kw);
   }
   std::error_code ec;
   bool started = target.format == "MED" && std::filesystem::file_size(target.path, ec) > 0 && !ec;

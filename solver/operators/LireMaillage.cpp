@@ -7,6 +7,7 @@
 #include "solver/io/MeshIO.hpp"
 #include "solver/mesh/MeshCheck.hpp"
 #include "solver/mesh/MeshSummary.hpp"
+#include "solver/operators/CoincidentNodesAlarm.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 
@@ -55,7 +56,12 @@ Value runLireMaillage(OperatorCall& call) {
   }
   const auto& veri = kw.occurrences("VERI_MAIL");
   if (!veri.empty() && veri.front().textOr("VERIF", "OUI") == "OUI") {
-    const auto report = checkMesh(*mesh, veri.front().realOr("APLAT", 1e-3));
+    auto report = checkMesh(*mesh, veri.front().realOr("APLAT", 1e-3));
+    if (!report.duplicateNodes.empty()) {
+      // Held until FIN: a DEFI_CONTACT may join them (CoincidentNodesAlarm.hpp).
+      call.session.defer(std::make_shared<CoincidentNodesAlarm>(*mesh, report.duplicateNodes, call.location));
+      report.duplicateNodes.clear();
+    }
     for (auto d : meshCheckDiagnostics(*mesh, report)) {
       d.location = call.location;
       call.session.report(d);

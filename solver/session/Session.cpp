@@ -192,6 +192,16 @@ std::filesystem::path Session::unitPath(int unit, const SourceLocation& at, bool
   return path;
 }
 
+void Session::reportDeferred() {
+  const auto pending = std::move(deferred_);
+  deferred_.clear();
+  for (const auto& r : pending) {
+    for (const auto& d : r->diagnostics()) {
+      report(d);
+    }
+  }
+}
+
 void Session::report(const Diagnostic& d) {
   if (d.severity == Severity::Info) {
     message_ << d.message << '\n';

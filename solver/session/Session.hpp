@@ -58,6 +58,15 @@ struct CommandTiming {
   double seconds = 0.0;
 };
 
+// An alarm held until the end of the study, because a later command may explain it (MESHCHECK_1:
+// coincident nodes that a DEFI_CONTACT joins). `diagnostics` is asked once, at FIN or when the run
+// stops.
+class DeferredReport {
+public:
+  virtual ~DeferredReport() = default;
+  virtual std::vector<Diagnostic> diagnostics() const = 0;
+};
+
 class Session : public CommandHandler, public DiagnosticSink {
 public:
   Session(const Catalog& catalog, std::ostream& message, std::ostream& result, SessionOptions options);
@@ -91,6 +100,11 @@ public:
 
   // DiagnosticSink: writes to the message file in code_aster's framed style and counts.
   void report(const Diagnostic& d) override;
+  // Deferred alarms: held by `defer`, found again by the commands that may explain them, reported
+  // by `reportDeferred` (FIN, and the batch job when the run stops before FIN; only once).
+  void defer(std::shared_ptr<DeferredReport> r) { deferred_.push_back(std::move(r)); }
+  const std::vector<std::shared_ptr<DeferredReport>>& deferred() const { return deferred_; }
+  void reportDeferred();
   // TEST_RESU / TEST_TABLE record each OK/NOOK line here.
   void recordTest(bool ok);
   void noteFailure(FailureKind kind);
@@ -138,6 +152,7 @@ private:
   std::vector<std::string> keptResults_;
   std::vector<KeptFile> keptFiles_;
   std::shared_ptr<Concept> inProgress_;
+  std::vector<std::shared_ptr<DeferredReport>> deferred_;
   bool finished_ = false;
   int commandCount_ = 0;
 };

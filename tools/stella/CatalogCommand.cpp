@@ -2,6 +2,7 @@
 
 #include "Commands.hpp"
 #include "catalog/Catalog.hpp"
+#include "interpreter/Suggest.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 
 #include <iostream>
@@ -22,8 +23,12 @@ int catalog(const CatalogArguments& args) {
     return 0;
   }
   if (cat.find(args.command) == nullptr) {
-    std::cerr << "stella: the catalogue has no command '" << args.command
-              << "'\n       `stella catalog --list` lists the commands\n";
+    std::cerr << "stella: the catalogue has no command '" << args.command << "'\n";
+    const std::string near = nearestName(args.command, cat.commandNames());
+    if (!near.empty()) {
+      std::cerr << "       did you mean " << near << "? (`stella catalog " << near << "`)\n";
+    }
+    std::cerr << "       `stella catalog --list` lists the commands\n";
     return exitUsage;
   }
   std::cout << cat.describe(args.command);

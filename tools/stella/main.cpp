@@ -2,13 +2,17 @@
 // This file only declares the command line; each subcommand lives in its own file.
 
 #include "Commands.hpp"
+#include "interpreter/Suggest.hpp"
 
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <iostream>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -40,11 +44,33 @@ std::string joinArguments(int argc, char** argv) {
   return out;
 }
 
+// The subcommand names, for "did you mean" when the first argument is none of them.
+const std::vector<std::string> subcommands{"run", "check", "fmt", "catalog", "convert"};
+
+// `stella chek ...`: CLI11 would only say that "chek" was not expected; name the nearest one.
+bool refusedUnknownSubcommand(int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') {
+    return false;
+  }
+  const std::string word = argv[1];
+  if (std::find(subcommands.begin(), subcommands.end(), word) != subcommands.end()) {
+    return false;
+  }
+  std::cerr << "stella: unknown subcommand '" << word << "'\n";
+  const std::string near = stella::nearestName(word, subcommands);
+  if (!near.empty()) {
+    std::cerr << "       did you mean `stella " << near << "`?\n";
+  }
+  std::cerr << "       `stella --help` lists the subcommands\n";
+  return true;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{description, "stella"};
-  app.set_version_flag("--version", std::string("stella ") + STELLA_VERSION);
+  app.set_version_flag("--version",
+                       std::string("stella ") + STELLA_VERSION + " (commit " + STELLA_GIT_COMMIT + ")");
   app.require_subcommand(1);
 
   stella::cli::RunArguments runArgs;
@@ -108,6 +134,9 @@ int main(int argc, char** argv) {
                stderr);
     std::_Exit(5);
   });
+  if (refusedUnknownSubcommand(argc, argv)) {
+    return stella::cli::exitUsage;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -17,7 +17,10 @@
 #include "solver/io/tests/MeshTestUtil.hpp"
 #include "solver/mesh/StructuredMesher.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
+
+#include <regex>
 
 namespace stella {
 namespace {
@@ -207,6 +210,33 @@ TEST(ImprResuNonlinear, MedOfStatNonLineReadByMeshioAndH5py) {
     EXPECT_NEAR(y[1], x[1] * (1 + lateral), 1e-12) << n;
     EXPECT_NEAR(y[2], x[2] * (1 + lateral), 1e-12) << n;
   }
+}
+
+// The convergence table's WHERE (MAXI) column names the degree of freedom of the largest residual
+// whole: with 10-character node names ("node BARNODE001, component DX", 29 characters) it was cut
+// at 23 characters ("node BARNODE001, compon").
+TEST(ImprResuNonlinear, ConvergenceTableShowsWholeNodeNames) {
+  const auto dir = testing::tempDir("impr_snl_names");
+  const Mesh plain = volumeWithNodeGroups({CellType::HEXA8, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}});
+  Mesh named;
+  for (NodeId n = 0; n < plain.nodeCount(); ++n) {
+    named.addNode(plain.point(n), fmt::format("BARNODE{:03d}", n + 1));
+  }
+  for (CellId c = 0; c < plain.cellCount(); ++c) {
+    named.addCell(plain.cellType(c), plain.cellNodes(c));
+  }
+  for (const auto& [name, nodes] : plain.nodeGroups()) {
+    named.setNodeGroup(name, nodes);
+  }
+  writeAsterMesh(dir / "bar.mail", named, {"bar with long node names"});
+  std::string comm = barComm;
+  comm.replace(comm.find("FORMAT='MED')"), 13, "FORMAT='ASTER')");
+  comm = comm.substr(0, comm.find("IMPR_RESU(")) + "FIN()\n";
+  const auto r = testing::runComm(dir, "bar", comm, {{20, dir / "bar.mail"}});
+  ASSERT_EQ(r.diagnostic, JobDiagnostic::Ok) << r.message;
+  const std::regex whole(R"(\| node BARNODE\d{3}, component D[XYZ] +\|)");
+  EXPECT_TRUE(std::regex_search(r.message, whole)) << r.message;
+  EXPECT_EQ(r.message.find("BARNODE001, compon |"), std::string::npos);
 }
 
 } // namespace

@@ -201,6 +201,74 @@ print("OK")
   EXPECT_EQ(runPython(dir, script, (dir / "r_1.vtu").string()), 0);
 }
 
+// VTU of a 2D result: DEPL (DX, DY) as a 3-vector with DZ = 0 (what ParaView's Warp By Vector
+// needs), a partial nodal field NaN on the nodes where it is not defined (not 0), SIEF_ELGA NaN on
+// the skin cells that have no Gauss points, and every array binary, appended and zlib-compressed
+// (read back by meshio, which decodes the blocks independently of stella).
+TEST(ResultWriters, VtuTwoDimensionalVectorsNanAndCompressedBinary) {
+  const auto dir = testing::tempDir("vtu_2d");
+  const Mesh m = buildStructuredMesh({CellType::QUAD4, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}});
+  Result r;
+  ResultStep& s = r.addStep(1.5, 3);
+  const auto nodes = static_cast<std::size_t>(m.nodeCount());
+  auto depl = std::make_shared<Field>(Field::nodal("DEPL_R", {"DX", "DY"}, nodes));
+  auto cont = std::make_shared<Field>(Field::nodal("NEUT_R", {"CONT"}, nodes));
+  cont->markPartial();
+  for (std::size_t n = 0; n < nodes; ++n) {
+    const auto x = m.point(static_cast<NodeId>(n));
+    depl->value(n, 0) = x[0];
+    depl->value(n, 1) = -x[1];
+    if (x[0] == 0.0) {
+      cont->value(n, 0) = 1.0;
+      cont->setDefined(n, 0);
+    }
+  }
+  s.fields["DEPL"] = depl;
+  s.fields["CONT_NOEU"] = cont;
+  std::vector<int> points;
+  for (CellId c = 0; c < m.cellCount(); ++c) {
+    points.push_back(m.cellType(c) == CellType::QUAD4 ? 4 : 0);
+  }
+  auto sief = std::make_shared<Field>(Field::perPoint(FieldSupport::GaussPoint, "SIEF_R", {"SIXX"}, points));
+  for (CellId c = 0; c < m.cellCount(); ++c) {
+    for (int p = 0; p < points[static_cast<std::size_t>(c)]; ++p) {
+      sief->value(sief->firstPoint(static_cast<std::size_t>(c)) + static_cast<std::size_t>(p), 0) =
+          10.0 * c + p;
+    }
+  }
+  s.fields["SIEF_ELGA"] = sief;
+  writeVtuResult(dir / "r.pvd", m, &r, {});
+  const char* script = R"(
+import sys, numpy as np, meshio, xml.etree.ElementTree as ET
+pvd = ET.parse(sys.argv[1] + "/r.pvd").getroot().find("Collection").findall("DataSet")
+assert [(float(d.get("timestep")), d.get("file")) for d in pvd] == [(1.5, "r_3.vtu")], pvd
+vtu = sys.argv[1] + "/r_3.vtu"
+raw = open(vtu, "rb").read()
+assert b'format="ascii"' not in raw and b'format="appended"' in raw, "appended binary"
+assert b'compressor="vtkZLibDataCompressor"' in raw and b'<AppendedData encoding="raw">' in raw
+assert b'ComponentName2="DZ"' in raw
+m = meshio.read(vtu)
+p = m.points
+d = m.point_data["DEPL"]
+assert d.shape == (len(p), 3), d.shape
+assert np.array_equal(d[:, 0], p[:, 0]) and np.array_equal(d[:, 1], -p[:, 1]) and not d[:, 2].any(), d
+c = m.point_data["CONT_NOEU"].ravel()
+on = p[:, 0] == 0.0
+assert on.sum() == 2 and np.array_equal(c[on], [1.0, 1.0]) and np.isnan(c[~on]).all(), c
+quads = 0
+for block, v in zip(m.cells, m.cell_data["SIEF_ELGA"]):
+    v = np.ravel(v)
+    if block.type == "quad":
+        quads += len(v)
+        assert np.isfinite(v).all() and np.allclose(v % 10, 1.5), v  # mean of 10 c + (0, 1, 2, 3)
+    else:
+        assert np.isnan(v).all(), (block.type, v)
+assert quads == 2, quads
+print("OK")
+)";
+  EXPECT_EQ(runPython(dir, script, dir.string()), 0);
+}
+
 TEST(ResultWriters, ResultTablesAndGmsh) {
   const auto dir = testing::tempDir("text_result");
   const Mesh m = buildStructuredMesh({CellType::QUAD4, {1, 1, 1}, {1, 1, 1}, {0, 0, 0}});

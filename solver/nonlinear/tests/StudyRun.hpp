@@ -35,6 +35,9 @@ inline std::unique_ptr<StudyRun> runStudy(const std::string& name, const std::st
                                           const std::string& mesh) {
   auto run = std::make_unique<StudyRun>();
   const auto work = std::filesystem::temp_directory_path() / ("stella_" + name);
+  // A fresh work directory: a unit file left by an earlier run (fort.80 in another MED version)
+  // would be appended to.
+  std::filesystem::remove_all(work);
   std::filesystem::create_directories(work);
   SessionOptions options;
   options.workDirectory = work;
