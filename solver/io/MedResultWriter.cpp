@@ -359,7 +359,8 @@ void writeMedResult(const std::filesystem::path& file, const Mesh& mesh, const s
   const StderrSilencer quiet;
   const PartialFile partial(file, append);
   try {
-    MedFile f(partial.path(), append ? MedFile::Mode::Append : MedFile::Mode::Create, file, output.medVersion);
+    MedFile f(partial.path(), append ? MedFile::Mode::Append : MedFile::Mode::Create, file,
+              output.medVersion);
     writeInto(f, mesh, meshName, result, output, append);
     f.close();
   } catch (UserError& e) {

@@ -263,7 +263,7 @@ std::map<int, fs::path> copyData(const JobSpec& spec, const fs::path& work,
 // Runs the command files in one session; every exception ends as a framed diagnostic.
 std::unique_ptr<Session> runStudy(const JobSpec& spec, const fs::path& work, std::ostream& mess,
                                   std::ostream& resuFile, const SessionOptions& sessionOptions,
-                                  std::vector<const JobSpec::DataFile*>& missing) {
+                                  const RunOptions& options, std::vector<const JobSpec::DataFile*>& missing) {
   std::unique_ptr<Session> session;
   auto report = [&](const Diagnostic& d) {
     if (session) {
@@ -355,7 +355,7 @@ JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
   armTimeLimit(spec.timeLimit);
 
   std::vector<const JobSpec::DataFile*> missing;
-  std::unique_ptr<Session> session = runStudy(spec, work, mess, resuFile, sessionOptions, missing);
+  std::unique_ptr<Session> session = runStudy(spec, work, mess, resuFile, sessionOptions, options, missing);
   armTimeLimit(0); // the copy-back is not stopped
 
   SessionCounts counts;

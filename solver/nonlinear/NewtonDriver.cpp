@@ -390,11 +390,11 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
         std::isfinite(maxi) && criteriaHold({{settings_.resiGlobRela > 0.0, test.ok},
                                              {settings_.resiGlobMaxi > 0.0, maxi <= settings_.resiGlobMaxi}},
                                             settings_.verif);
-    log_ << fmt::format(
-        "   | {:4d} | {:14.6e} | {:14.6e} | {:<23} | {:<9} |{}{}{}\n", iter, rela, maxi, at,
-        matrixNote, rhoColumn ? fmt::format(" {:<8.4g} |", rho) : std::string(),
-        columns_ != nullptr ? columns_->row(start.displacement + du, end.points) : std::string(),
-        constraint_ != nullptr ? " " + constraint_->iterationNote() : std::string());
+    log_ << fmt::format("   | {:4d} | {:14.6e} | {:14.6e} | {:<23} | {:<9} |{}{}{}\n", iter, rela, maxi, at,
+                        matrixNote, rhoColumn ? fmt::format(" {:<8.4g} |", rho) : std::string(),
+                        columns_ != nullptr ? columns_->row(start.displacement + du, end.points)
+                                            : std::string(),
+                        constraint_ != nullptr ? " " + constraint_->iterationNote() : std::string());
     out.iterations = iter;
     out.resiRela = rela;
     out.resiMaxi = maxi;
