@@ -8,6 +8,8 @@ Line(5) = {5, 8}; Line(6) = {8, 7}; Line(7) = {7, 6}; Line(8) = {6, 5};
 Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
 Curve Loop(2) = {5, 6, 7, 8}; Plane Surface(2) = {2};
 Transfinite Curve{1, 3} = 9; Transfinite Curve{2, 4} = 11;
+// The contact edges carry the same 10 segments on both sides (as a compound mesh of Salome gives).
+Transfinite Curve{8} = 11;
 Transfinite Surface{1}; Recombine Surface{1};
 Physical Surface("Fondation") = {1};
 Physical Surface("Patin") = {2};
