@@ -32,7 +32,7 @@ void roundTrip(const std::string& name, const Mesh& m) {
   ASSERT_EQ(read.cellCount(), m.cellCount());
   ASSERT_EQ(read.nodeCount(), m.nodeCount());
   ASSERT_EQ(read.cellGroups().size(), m.cellGroups().size());
-  const CommRun r = runComm(dir, "imp", kWriteMesh, {{20, dir / "m.med"}});
+  const CommRun r = runComm(dir, "imp", kWriteMesh, {{20, dir / "m.med"}, {26, dir / "m.mail"}});
   EXPECT_EQ(r.diagnostic, JobDiagnostic::Ok) << r.message;
   EXPECT_NE(r.message.find("mesh MA written in the ASTER format"), std::string::npos) << r.message;
   const auto file = dir / "imp.work" / "fort.26";
@@ -78,8 +78,8 @@ TEST(ImprResuAster, FieldsAndTheirKeywordsAreRefused) {
   };
   int k = 0;
   for (const auto& [call, what] : cases) {
-    const CommRun r =
-        runComm(dir, "refused" + std::to_string(k++), head + call + "FIN()\n", {{20, dir / "m.med"}});
+    const CommRun r = runComm(dir, "refused" + std::to_string(k++), head + call + "FIN()\n",
+                              {{20, dir / "m.med"}, {26, dir / "m.mail"}});
     EXPECT_EQ(r.diagnostic, JobDiagnostic::Error) << call;
     EXPECT_NE(r.message.find("IMPR_RESU_1"), std::string::npos) << r.message;
     EXPECT_NE(r.message.find(what), std::string::npos) << r.message;

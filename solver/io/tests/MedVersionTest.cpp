@@ -71,7 +71,8 @@ TEST(MedVersion, VersionMedIsTheFormatWrittenAndMeshioReadsEach) {
       "IMPR_RESU(FORMAT='MED', UNITE=82, VERSION_MED='4.0.0', RESU=_F(RESULTAT=RESU, NOM_CHAM='DEPL'))\n"
       "IMPR_RESU(FORMAT='MED', UNITE=83, VERSION_MED='4.1.0', RESU=_F(RESULTAT=RESU, NOM_CHAM='DEPL'))\n"
       "FIN()\n";
-  const auto r = testing::runComm(dir, "bar", comm, {{20, dir / "bar.med"}});
+  const auto r = testing::runComm(dir, "bar", comm,
+                                  {{20, dir / "bar.med"}, {82, dir / "v40.med"}, {83, dir / "v41.med"}});
   ASSERT_EQ(r.diagnostic, JobDiagnostic::Ok) << r.message;
   const auto work = dir / "bar.work";
   EXPECT_EQ(testing::runPython(dir, versionCheck,
@@ -88,7 +89,7 @@ TEST(MedVersion, AppendingAnotherVersionIsRefused) {
       "IMPR_RESU(FORMAT='MED', UNITE=82, VERSION_MED='3.3.1', RESU=_F(RESULTAT=RESU, NOM_CHAM='DEPL'))\n"
       "IMPR_RESU(FORMAT='MED', UNITE=82, VERSION_MED='4.1.0', RESU=_F(RESULTAT=RESU, NOM_CHAM='DEPL'))\n"
       "FIN()\n";
-  const auto r = testing::runComm(dir, "mix", comm, {{20, dir / "bar.med"}});
+  const auto r = testing::runComm(dir, "mix", comm, {{20, dir / "bar.med"}, {82, dir / "mix.med"}});
   EXPECT_NE(r.diagnostic, JobDiagnostic::Ok) << r.message;
   EXPECT_NE(r.message.find("the file is in MED 3.3, VERSION_MED asks 4.1.0"), std::string::npos) << r.message;
 }

@@ -85,7 +85,7 @@ TEST(FrameAndPressureErrors, RefusedByNameOrLocated) {
   int k = 0;
   for (const Case& c : cases) {
     const CommRun r = runComm(dir, "case" + std::to_string(k++), std::string(kStudy) + c.call + "\nFIN()\n",
-                              {{20, dir / "m.med"}});
+                              {{20, dir / "m.med"}, {26, dir / "out.mail"}});
     EXPECT_EQ(r.diagnostic, JobDiagnostic::Error) << c.call << "\n" << r.message;
     EXPECT_NE(r.message.find(c.code), std::string::npos) << c.call << "\n" << r.message;
     EXPECT_NE(r.message.find(c.text), std::string::npos) << c.call << "\n" << r.message;
