@@ -170,6 +170,37 @@ void copyCompanions(const fs::path& work, int unit, const fs::path& destination,
   std::ofstream(destination, std::ios::binary) << text;
 }
 
+// Whether two files hold the same bytes (sizes first, then the contents in blocks).
+bool sameContent(const fs::path& a, const fs::path& b) {
+  std::error_code ec;
+  if (fs::file_size(a, ec) != fs::file_size(b, ec) || ec) {
+    return false;
+  }
+  std::ifstream fa(a, std::ios::binary);
+  std::ifstream fb(b, std::ios::binary);
+  std::vector<char> ba(1 << 16);
+  std::vector<char> bb(1 << 16);
+  while (fa && fb) {
+    fa.read(ba.data(), static_cast<std::streamsize>(ba.size()));
+    fb.read(bb.data(), static_cast<std::streamsize>(bb.size()));
+    if (fa.gcount() != fb.gcount() || !std::equal(ba.begin(), ba.begin() + fa.gcount(), bb.begin())) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// A quick run's `--unit N=path` is both a data file (copied in when it exists) and a result (copied
+// back when the study wrote it): a unit whose file is still the data copied in was only read.
+bool unchangedData(const JobSpec& spec, int unit, const fs::path& produced) {
+  for (const auto& d : spec.data) {
+    if (d.unit == unit) {
+      return !d.directory && fs::exists(d.source) && sameContent(d.source, produced);
+    }
+  }
+  return false;
+}
+
 // Copies the result units back, each file on its own: one that cannot be copied is recorded with
 // its reason and the others still come back.
 CopyOutcome copyResults(const JobSpec& spec, const fs::path& work, bool stopped, std::ostream& mess) {
@@ -179,7 +210,7 @@ CopyOutcome copyResults(const JobSpec& spec, const fs::path& work, bool stopped,
       continue; // still open: copied when the run is over
     }
     fs::path produced = work / ("fort." + std::to_string(unit));
-    if (!fs::exists(produced)) {
+    if (!fs::exists(produced) || (spec.resultsOptional && unchangedData(spec, unit, produced))) {
       if (spec.resultsOptional) {
         continue;
       }
@@ -313,10 +344,12 @@ std::unique_ptr<Session> runStudy(const JobSpec& spec, const fs::path& work, std
 
 // What the session says at the end: missing data, the base, the timings, what was kept.
 void closeSession(Session& session, const JobSpec& spec, const std::vector<const JobSpec::DataFile*>& missing,
-                  std::ostream& mess) {
+                  const fs::path& work, std::ostream& mess) {
   for (const auto* d : missing) {
     const auto& opened = session.openedUnits();
-    if (std::find(opened.begin(), opened.end(), d->unit) == opened.end()) {
+    // A quick run's --unit that did not exist yet and that a command wrote is an output.
+    const bool written = fs::exists(work / ("fort." + std::to_string(d->unit)));
+    if (!written && std::find(opened.begin(), opened.end(), d->unit) == opened.end()) {
       session.report(
           Diagnostic::alarm("RUN_2", fmt::format("the data file {} declared for unit {} ({}) does not "
                                                  "exist; the study never opened it",
@@ -363,7 +396,7 @@ JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
   if (session) {
     session->reportDeferred(); // the run stopped before FIN: the held alarms still count
     try {
-      closeSession(*session, spec, missing, mess);
+      closeSession(*session, spec, missing, work, mess);
       mess << "\n";
       copied = copyResults(spec, work, session->counts().failure != FailureKind::None, mess);
       copyKeptFiles(*session, copied);
@@ -486,15 +519,23 @@ JobResult runCommandFile(const fs::path& commandFile, const std::map<int, fs::pa
   JobSpec spec;
   fs::path comm = fs::absolute(commandFile);
   spec.commandFiles.push_back(comm);
-  for (const auto& [unit, path] : units) {
-    spec.data.push_back({unit, fs::absolute(path), fmt::format("--unit {}={}", unit, path.string()), false});
-  }
   fs::path outputBase = options.outputDirectory.empty() ? comm.parent_path() : options.outputDirectory;
   std::string stem = comm.stem().string();
   spec.results[6] = outputBase / (stem + ".mess");
   spec.results[8] = outputBase / (stem + ".resu");
   spec.results[80] = outputBase / (stem + ".rmed");
   spec.results[81] = outputBase / (stem + ".pvd"); // IMPR_RESU FORMAT='VTU', its .vtu beside it
+  // Every other unit a command writes comes back as <stem>.<unit> (IMPR_TABLE on 30, GMSH on 37).
+  for (int unit = 1; unit <= 99; ++unit) {
+    if (unit != 15 && spec.results.count(unit) == 0) {
+      spec.results[unit] = outputBase / fmt::format("{}.{}", stem, unit);
+    }
+  }
+  // --unit N=path: read from path when it exists, and written back to it when a command wrote N.
+  for (const auto& [unit, path] : units) {
+    spec.data.push_back({unit, fs::absolute(path), fmt::format("--unit {}={}", unit, path.string()), false});
+    spec.results[unit] = fs::absolute(path);
+  }
   spec.resultsOptional = true;
   spec.outputDirectory = outputBase;
   spec.stem = stem;

@@ -83,6 +83,26 @@ check "quick run of a .comm: exit 0" test $code -eq 0
 "$stella" run ok.comm --unit 20 >out.txt 2>err.txt; code=$?
 check "bad --unit: usage exit 64" test $code -eq 64
 
+# Quick run: every unit a command writes comes back, as <stem>.<unit> or to its --unit path; a
+# --unit the study only reads is not copied back.
+cat > units.comm <<'COMM'
+DEBUT()
+T = CREA_TABLE(LISTE=(_F(PARA='X', LISTE_R=(1.0, 2.0)),))
+IMPR_TABLE(TABLE=T, UNITE=30)
+IMPR_TABLE(TABLE=T, UNITE=31)
+FIN()
+COMM
+printf 'read only\n' > input.txt
+rm -f units.30 mytab.txt
+"$stella" run units.comm --quiet --unit 31=mytab.txt --unit 40=input.txt >out.txt 2>err.txt; code=$?
+check "quick run, units 30 and 31: exit 0" test $code -eq 0
+check "quick run: unit 30 comes back as units.30" grep -q "2.00000E+00" units.30
+check "quick run: unit 31 comes back to its --unit path" grep -q "2.00000E+00" mytab.txt
+check "quick run: the written units are listed" grep -q "wrote .*units.30" err.txt
+check "quick run: a --unit only read is not copied back" sh -c '! grep -q "input.txt" err.txt'
+check "quick run: the data file is unchanged" grep -q "^read only$" input.txt
+check "quick run: no RUN_2 alarm for an output --unit" sh -c '! grep -q RUN_2 units.mess'
+
 # --reference-only: VALE_CALC (non-regression) lines are printed with their difference but not
 # counted; only the reference lines decide OK / NOOK, and a file without any is NO_TEST_RESU.
 cat > refonly.comm <<'COMM'
