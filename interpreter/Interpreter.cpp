@@ -93,7 +93,10 @@ RunStatus Interpreter::run(const std::shared_ptr<const SourceFile>& file) {
     impl_->sink.report(abortDiagnostic(e.what()));
     return RunStatus::Failed;
   } catch (const std::bad_alloc&) {
-    impl_->sink.report(Diagnostic::fatal("LANG_MEMORY", "out of memory while running the command file"));
+    impl_->sink.report(
+        Diagnostic::fatal("LANG_MEMORY", "out of memory while running the command file")
+            .withNote("the run's memory is spent: raise P memory_limit in the export (when it sets one), "
+                      "or make the values of the command file smaller"));
     return RunStatus::Failed;
   } catch (const std::exception& e) {
     impl_->sink.report(abortDiagnostic(std::string("unexpected failure: ") + e.what()));

@@ -1,17 +1,21 @@
 #include "BatchJob.hpp"
+#include "JobSpec.hpp"
 
 #include "CopyBack.hpp"
 #include "TeeStream.hpp"
 #include "catalog/Catalog.hpp"
 #include "interpreter/Interpreter.hpp"
 #include "solver/session/ExceptionDiagnostic.hpp"
+#include "solver/session/MemoryLimit.hpp"
 #include "solver/session/Session.hpp"
 #include "solver/session/StopRequest.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
+#include <cstring>
 #include <ctime>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -26,26 +30,6 @@ namespace stella {
 namespace fs = std::filesystem;
 
 namespace {
-
-// What a run needs, whether it came from an export or from the command line.
-struct JobSpec {
-  std::vector<fs::path> commandFiles;
-  struct DataFile {
-    int unit;
-    fs::path source;
-    std::string origin; // "study.export:5" or "--unit 20=..."
-    bool directory;
-  };
-  std::vector<DataFile> data;
-  std::map<int, fs::path> results; // unit -> destination
-  bool isTestcase = false;
-  std::vector<std::string> expectedDiagnostics;
-  bool saveBase = false;
-  bool resultsOptional = false; // quick runs: say nothing of result units the study did not write
-  fs::path outputDirectory;     // where the steps of a failed command are copied back
-  std::string stem;             // of the export or command file: <stem>.<RESULT>.incomplete.rmed
-  unsigned timeLimit = 0;       // P time_limit, seconds (0: none)
-};
 
 constexpr const char* workMarker = ".stella-work";
 
@@ -364,9 +348,60 @@ void closeSession(Session& session, const JobSpec& spec, const std::vector<const
   writeTimingSummary(mess, session);
 }
 
-JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
+// The diagnostic of a run process that ended on `signal`, with what usually causes it.
+Diagnostic crashDiagnostic(int signal) {
+  const char* name = sigabbrev_np(signal);
+  Diagnostic d = Diagnostic::fatal("RUN_7", fmt::format("the run process ended on signal {} (SIG{})", signal,
+                                                        name != nullptr ? name : "?"));
+  d.kind = FailureKind::Abort;
+  if (signal == SIGKILL) {
+    d.withNote("SIGKILL without a request is most often the system's out-of-memory killer: the study "
+               "needed more memory than the machine had; P memory_limit in the export stops such a run "
+               "with an error instead, and a coarser mesh or another SOLVEUR needs less");
+  } else {
+    d.withNote("a crash in stella or in a library it calls (under P memory_limit, a library that ran out "
+               "of memory may end so); please report it with the command file");
+  }
+  return d;
+}
+
+// The message and result files, complete only now, copied back; the work directory removed
+// after a clean run.
+void finishFiles(const JobSpec& spec, const RunOptions& options, const fs::path& work,
+                 const CopyOutcome& copied, JobResult& job) {
+  // The message and result files are complete only now.
+  std::vector<fs::path> written = copied.written;
+  for (int unit : {6, 8}) {
+    auto it = spec.results.find(unit);
+    if (it == spec.results.end()) {
+      continue;
+    }
+    if (auto reason = copyResultFile(work / ("fort." + std::to_string(unit)), it->second)) {
+      job.copyFailures.push_back(
+          fmt::format("unit {}: {} (kept in {} as fort.{})", unit, *reason, work.string(), unit));
+      continue;
+    }
+    written.push_back(it->second);
+  }
+  for (const auto& f : copied.failed) {
+    if (f.unit != 6 && f.unit != 8) {
+      job.copyFailures.push_back(fmt::format("unit {}: {} (kept in {} as {})", f.unit, f.reason,
+                                             work.string(), f.source.filename().string()));
+    }
+  }
+  job.resultFiles = written;
+  bool failed = exitCode(job.diagnostic) != 0 || !job.copyFailures.empty();
+  if (!options.keepWorkDirectory && !failed && options.workDirectory.empty()) {
+    std::error_code ec;
+    fs::remove_all(work, ec);
+    job.workDirectory.clear();
+  }
+}
+
+} // namespace
+
+JobResult runInWork(const JobSpec& spec, const RunOptions& options, const fs::path& work) {
   JobResult job;
-  fs::path work = makeWorkDirectory(options);
   job.workDirectory = work;
 
   std::ofstream messFile(work / "fort.6");
@@ -388,7 +423,14 @@ JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
   armTimeLimit(spec.timeLimit);
 
   std::vector<const JobSpec::DataFile*> missing;
-  std::unique_ptr<Session> session = runStudy(spec, work, mess, resuFile, sessionOptions, options, missing);
+  std::unique_ptr<Session> session;
+  {
+    ScopedMemoryLimit memoryLimit(spec.memoryLimit); // lifted before the copy-back
+    if (spec.memoryLimit > 0.0) {
+      mess << fmt::format("  Memory limit of the run: {:g} MiB (P memory_limit)\n", spec.memoryLimit);
+    }
+    session = runStudy(spec, work, mess, resuFile, sessionOptions, options, missing);
+  }
   armTimeLimit(0); // the copy-back is not stopped
 
   SessionCounts counts;
@@ -435,34 +477,44 @@ JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
   mess.flush();
   messFile.close();
   resuFile.close();
-  // The message and result files are complete only now.
-  std::vector<fs::path> written = copied.written;
-  for (int unit : {6, 8}) {
-    auto it = spec.results.find(unit);
-    if (it == spec.results.end()) {
-      continue;
-    }
-    if (auto reason = copyResultFile(work / ("fort." + std::to_string(unit)), it->second)) {
-      job.copyFailures.push_back(
-          fmt::format("unit {}: {} (kept in {} as fort.{})", unit, *reason, work.string(), unit));
-      continue;
-    }
-    written.push_back(it->second);
+  finishFiles(spec, options, work, copied, job);
+  return job;
+}
+
+JobResult rescueCrashedRun(const JobSpec& spec, const RunOptions& options, const fs::path& work, int signal) {
+  JobResult job;
+  job.workDirectory = work;
+  job.diagnostic = JobDiagnostic::AbnormalAbort;
+  std::ofstream messFile(work / "fort.6", std::ios::app);
+  TeeBuffer tee(messFile.rdbuf(), options.echo ? std::cout.rdbuf() : nullptr);
+  std::ostream mess(&tee);
+  mess << "\n" << framedDiagnostic(crashDiagnostic(signal));
+  CopyOutcome copied;
+  try {
+    copied = copyResults(spec, work, true, mess);
+  } catch (const std::exception& e) {
+    mess << framedDiagnostic(diagnosticOf(e, "copying the result files back"));
   }
   for (const auto& f : copied.failed) {
-    if (f.unit != 6 && f.unit != 8) {
-      job.copyFailures.push_back(fmt::format("unit {}: {} (kept in {} as {})", f.unit, f.reason,
-                                             work.string(), f.source.filename().string()));
-    }
+    mess << framedDiagnostic(copyFailure(f, work));
   }
-  job.resultFiles = written;
-  bool failed = exitCode(diagnostic) != 0 || !job.copyFailures.empty();
-  if (!options.keepWorkDirectory && !failed && options.workDirectory.empty()) {
-    std::error_code ec;
-    fs::remove_all(work, ec);
-    job.workDirectory.clear();
-  }
+  mess << "\n  The run process ended abnormally. The result files the study wrote before are copied back"
+       << (copied.failed.empty() ? "" : ", except those named above")
+       << "; the steps of the command that was running are lost.\n"
+       << "\n  The work directory is kept: " << work.string() << "\n"
+       << "\n"
+       << diagnosticFrame(job.diagnostic);
+  mess.flush();
+  messFile.close();
+  finishFiles(spec, options, work, copied, job);
   return job;
+}
+
+namespace {
+
+JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
+  fs::path work = makeWorkDirectory(options);
+  return options.supervised ? runSupervised(spec, options, work) : runInWork(spec, options, work);
 }
 
 // P time_limit <seconds>: the run stops at the next safe point once it has run that long.
@@ -481,6 +533,24 @@ unsigned timeLimitOf(const Export& study) {
             .withNote(study.file.string() + ": write e.g. P time_limit 3600"));
   }
   return static_cast<unsigned>(std::ceil(seconds));
+}
+
+// P memory_limit <MiB>: the address space the run may use (as code_aster's run script applies it).
+double memoryLimitOf(const Export& study) {
+  if (!study.hasParameter("memory_limit")) {
+    return 0.0;
+  }
+  const std::vector<std::string> words = study.parameter("memory_limit");
+  char* end = nullptr;
+  const double mebibytes = words.size() == 1 ? std::strtod(words.front().c_str(), &end) : -1.0;
+  if (words.size() != 1 || end == words.front().c_str() || *end != '\0' || !(mebibytes >= 64.0) ||
+      mebibytes > 1.0e9) {
+    throw UserError(
+        Diagnostic::fatal("EXPORT_11", "P memory_limit expects one number of MiB of at least 64, got '" +
+                                           fmt::format("{}", fmt::join(words, " ")) + "'")
+            .withNote(study.file.string() + ": write e.g. P memory_limit 4096"));
+  }
+  return mebibytes;
 }
 
 } // namespace
@@ -509,6 +579,7 @@ JobResult runExport(const Export& study, const RunOptions& options) {
   spec.outputDirectory = outputBase;
   spec.stem = study.file.stem().string();
   spec.timeLimit = timeLimitOf(study);
+  spec.memoryLimit = memoryLimitOf(study);
   spec.isTestcase = study.hasParameter("testlist");
   spec.expectedDiagnostics = study.parameter("expected_diag");
   return runSpec(spec, options);

@@ -22,6 +22,9 @@ struct RunOptions {
   std::string commandLine;      // for the message file header
   long long maxOperations = 0;  // evaluation budget of the command files (0: the default)
   long long maxMemoryBytes = 0; // (0: the default)
+  // The study runs in a child process; a crash of it still ends with the message file, the job
+  // diagnostic and the result files written before (stella run; in-process callers leave it off).
+  bool supervised = false;
 };
 
 struct JobResult {

@@ -1,4 +1,5 @@
 #include "ExceptionDiagnostic.hpp"
+#include "MemoryLimit.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -87,6 +88,14 @@ Diagnostic diagnosticOf(const std::exception& e, const std::string& during, Sour
         .withNote(osAdvice(se->code().value()));
   }
   if (dynamic_cast<const std::bad_alloc*>(&e) != nullptr) {
+    if (activeMemoryLimit() > 0.0) {
+      return Diagnostic::fatal("MEMORY_1",
+                               fmt::format("not enough memory while {}: the run's limit of {:g} MiB (P "
+                                           "memory_limit) is reached",
+                                           during, activeMemoryLimit()),
+                               std::move(at))
+          .withNote("raise P memory_limit in the export, or use a coarser mesh");
+    }
     return Diagnostic::fatal("MEMORY_1", "not enough memory while " + during, std::move(at))
         .withNote("use a coarser mesh or a machine with more memory");
   }

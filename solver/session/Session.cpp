@@ -132,6 +132,10 @@ UserError withCallingCommand(const UserError& e, const std::string& command, con
 
 } // namespace
 
+std::string framedDiagnostic(const Diagnostic& d) {
+  return framed(d);
+}
+
 Session::Session(const Catalog& catalog, std::ostream& message, std::ostream& result, SessionOptions options)
     : catalog_(catalog), message_(message), result_(result), options_(std::move(options)) {}
 

@@ -67,6 +67,9 @@ public:
   virtual std::vector<Diagnostic> diagnostics() const = 0;
 };
 
+// A diagnostic in the code_aster-style frame of the message file (" ! <F> <ID>" ...).
+std::string framedDiagnostic(const Diagnostic& d);
+
 class Session : public CommandHandler, public DiagnosticSink {
 public:
   Session(const Catalog& catalog, std::ostream& message, std::ostream& result, SessionOptions options);

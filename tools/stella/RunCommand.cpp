@@ -57,6 +57,7 @@ int run(const RunArguments& args) {
   options.commandLine = args.commandLine;
   options.maxOperations = args.maxOperations;
   options.maxMemoryBytes = args.maxMemoryMiB << 20;
+  options.supervised = true;
 
   std::filesystem::path target(args.target);
   try {

@@ -12,6 +12,11 @@
 #   failed-step  a STAT_NON_LINE that fails at step k before its IMPR_RESU: the steps reach the
 #                disk in <study>.<RESU>.incomplete.rmed, readable
 #   time-limit   P time_limit stops a long STAT_NON_LINE the same way (exit 7, <S>_CPU_LIMIT)
+#   killed       the run process killed (SIGKILL, as the system's out-of-memory killer does):
+#                the message file ends with RUN_7 and <F>_ABNORMAL_ABORT, the MED file written
+#                before comes back readable, exit 5
+#   memory-limit P memory_limit: an allocation beyond it stops the command with MEMORY_1 naming
+#                the limit (exit 3), the earlier MED file comes back; a bad value is EXPORT_11
 set -uo pipefail
 stella="$(readlink -f "$1")"
 case_name="$2"
@@ -201,12 +206,65 @@ time_limit() {
   check "time limit: EXPORT_9" grep -q "EXPORT_9" err.txt
 }
 
+killed() {
+  study s 4000 6 ""
+  # the mesh written first, so that a file exists before the kill
+  sed -i 's/^RESU = STAT_NON_LINE/IMPR_RESU(FORMAT='"'"'MED'"'"', UNITE=81, RESU=_F(MAILLAGE=MA))\nRESU = STAT_NON_LINE/' s.comm
+  printf 'F comm s.comm D 1\nF msh s.msh D 20\nF mess out/s.mess R 6\nF rmed out/s.rmed R 80\nF rmed out/mesh.rmed R 81\n' > s.export
+  "$stella" run s.export --quiet --work-dir "$work" >out.txt 2>err.txt &
+  pid=$!
+  for _ in $(seq 1 600); do
+    grep -q "step 1 INST" "$work/fort.6" 2>/dev/null && break
+    sleep 0.05
+  done
+  pkill -KILL -P $pid
+  wait $pid; code=$?
+  check "killed: exit 5 (<F>_ABNORMAL_ABORT) (got $code)" test $code -eq 5
+  check "killed: the message file came back with RUN_7 naming SIGKILL" grep -q "ended on signal 9 (SIGKILL) \[RUN_7\]" out/s.mess
+  check "killed: the advice names the out-of-memory killer" grep -q "out-of-memory killer" out/s.mess
+  check "killed: the diagnostic <F>_ABNORMAL_ABORT" grep -q -- "--- DIAGNOSTIC JOB : <F>_ABNORMAL_ABORT" out/s.mess
+  check "killed: the mesh written before came back readable" readable out/mesh.rmed
+  check "killed: the steps before are in the message file" grep -q "step 1 INST" out/s.mess
+}
+
+memory_limit() {
+  cat > m.comm <<'COMM'
+DEBUT()
+MA = LIRE_MAILLAGE(FORMAT='GMSH', UNITE=20)
+MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='D_PLAN'))
+MAT = DEFI_MATERIAU(ELAS=_F(E=200000.0, NU=0.3))
+CM = AFFE_MATERIAU(MAILLAGE=MA, AFFE=_F(TOUT='OUI', MATER=MAT))
+CH = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=(_F(GROUP_MA='BOTTOM', DX=0.0, DY=0.0), _F(GROUP_MA='TOP', DY=0.01)))
+IMPR_RESU(FORMAT='MED', UNITE=80, RESU=_F(MAILLAGE=MA))
+RESU = MECA_STATIQUE(MODELE=MO, CHAM_MATER=CM, EXCIT=_F(CHARGE=CH))
+IMPR_RESU(FORMAT='MED', UNITE=80, RESU=_F(RESULTAT=RESU))
+FIN()
+COMM
+  "$here/faults/mesh.sh" 400 > m.msh
+  printf 'P memory_limit 250\nF comm m.comm D 1\nF msh m.msh D 20\nF mess out/m.mess R 6\nF rmed out/m.rmed R 80\n' > m.export
+  "$stella" run m.export --quiet >out.txt 2>err.txt; code=$?
+  check "memory limit: exit 3 (<F>_ERROR), not a crash (got $code)" test $code -eq 3
+  check "memory limit: the message file says the limit" grep -q "Memory limit of the run: 250 MiB (P memory_limit)" out/m.mess
+  check "memory limit: MEMORY_1 at MECA_STATIQUE naming the limit" \
+    grep -q "m.comm:8:8: error: not enough memory while running MECA_STATIQUE: the run's limit of 250 MiB (P memory_limit) is reached \[MEMORY_1\]" out/m.mess
+  check "memory limit: the mesh written before came back readable" readable out/m.rmed
+  sed -i 's/memory_limit 250/memory_limit 4096/' m.export
+  "$stella" run m.export --quiet >out.txt 2>err.txt; code=$?
+  check "memory limit of 4096 MiB: the same study ends OK (got $code)" test $code -eq 0
+  printf 'P memory_limit lots\nF comm m.comm D 1\n' > bad.export
+  "$stella" run bad.export --quiet >out.txt 2>err.txt; code=$?
+  check "memory limit: a bad value is refused (exit 65)" test $code -eq 65
+  check "memory limit: EXPORT_11" grep -q "EXPORT_11" err.txt
+}
+
 case "$case_name" in
   unwritable) unwritable ;;
   full-disk) full_disk ;;
   signal) signal_stop ;;
   failed-step) failed_step ;;
   time-limit) time_limit ;;
+  killed) killed ;;
+  memory-limit) memory_limit ;;
   *) echo "unknown case $case_name"; exit 2 ;;
 esac
 echo "$fails failure(s)"

@@ -182,13 +182,13 @@ TEST(ImprResuNonlinear, MedOfStatNonLineReadByMeshioAndH5py) {
   const auto dir = testing::tempDir("impr_snl");
   writeMedMesh(dir / "bar.med", volumeWithNodeGroups({CellType::HEXA8, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}}),
                "BAR");
-  // unit 82 (the deformed mesh, read back from the work directory) is declared: a command may
-  // write only to a declared unit
+  // unit 80 comes back to its --unit path; unit 82 (the deformed mesh, read back from the work
+  // directory) is written back to deformed.med
   const auto r = testing::runComm(dir, "bar", barComm,
                                   {{20, dir / "bar.med"}, {80, dir / "out.med"}, {82, dir / "deformed.med"}});
   ASSERT_EQ(r.diagnostic, JobDiagnostic::Ok) << r.message;
-  EXPECT_EQ(
-      testing::runPython(dir, barCheck, (dir / "bar.rmed").string() + " " + (dir / "bar.resu").string()), 0);
+  EXPECT_EQ(testing::runPython(dir, barCheck, (dir / "out.med").string() + " " + (dir / "bar.resu").string()),
+            0);
   // FORMAT='VTU' (catalogue extension, default unit 81): the .pvd copied back as bar.pvd with its
   // .vtu files renamed bar_<k>.vtu beside it and named so in the collection.
   EXPECT_TRUE(std::filesystem::exists(dir / "bar_6.vtu"));

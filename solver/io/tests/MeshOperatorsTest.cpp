@@ -117,7 +117,7 @@ TEST(MeshOperators, ModiCreaInfoAndImpr) {
   EXPECT_NE(r.message.find("ORIE_PEAU: 1 of 4 skin cells reoriented"), std::string::npos) << r.message;
   EXPECT_NE(r.message.find("QUAD8"), std::string::npos);
   EXPECT_NE(r.message.find("aspect ratio"), std::string::npos);
-  const Mesh out = readMedMesh(dir / "modi.rmed"); // unit 80 comes back beside the command file
+  const Mesh out = readMedMesh(dir / "out.med"); // unit 80 comes back to its --unit path
   EXPECT_EQ(out.nodeCount(), 21);
   EXPECT_DOUBLE_EQ(out.point(0)[0], 1.0);
 }

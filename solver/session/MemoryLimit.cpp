@@ -1,0 +1,48 @@
+// ScopedMemoryLimit: RLIMIT_AS lowered for the duration of the run, then restored.
+
+#include "solver/session/MemoryLimit.hpp"
+
+#include <atomic>
+#include <sys/resource.h>
+
+namespace stella {
+
+namespace {
+std::atomic<double> limitInForce{0.0};
+}
+
+ScopedMemoryLimit::ScopedMemoryLimit(double mebibytes) {
+  if (!(mebibytes > 0.0)) {
+    return;
+  }
+  rlimit current{};
+  if (getrlimit(RLIMIT_AS, &current) != 0) {
+    return;
+  }
+  const auto bytes = static_cast<rlim_t>(mebibytes * 1024.0 * 1024.0);
+  rlimit lowered = current;
+  lowered.rlim_cur = current.rlim_max == RLIM_INFINITY || bytes < current.rlim_max ? bytes : current.rlim_max;
+  if (setrlimit(RLIMIT_AS, &lowered) != 0) {
+    return;
+  }
+  previous_ = current.rlim_cur;
+  applied_ = true;
+  limitInForce = mebibytes;
+}
+
+ScopedMemoryLimit::~ScopedMemoryLimit() {
+  if (!applied_) {
+    return;
+  }
+  rlimit current{};
+  getrlimit(RLIMIT_AS, &current);
+  current.rlim_cur = static_cast<rlim_t>(previous_);
+  setrlimit(RLIMIT_AS, &current);
+  limitInForce = 0.0;
+}
+
+double activeMemoryLimit() {
+  return limitInForce.load();
+}
+
+} // namespace stella
