@@ -13,16 +13,12 @@
 #                disk in <study>.<RESU>.incomplete.rmed, readable
 #   time-limit   P time_limit stops a long STAT_NON_LINE the same way (exit 7, <S>_CPU_LIMIT)
 set -uo pipefail
+source "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/lib.sh"
 stella="$(readlink -f "$1")"
 case_name="$2"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 dir="$(mktemp -d)"
 trap 'rm -rf "$dir" /tmp/stella-faults-work-$$' EXIT
-fails=0
-check() { # description, condition...
-  local what="$1"; shift
-  if "$@"; then echo "ok   $what"; else echo "FAIL $what"; fails=$((fails + 1)); fi
-}
 cd "$dir"
 work="/tmp/stella-faults-work-$$"
 
