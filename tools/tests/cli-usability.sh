@@ -3,13 +3,9 @@
 # suggested, and `stella --version` names the version and the commit it was built from.
 # Usage: cli-usability.sh PATH/TO/stella SOURCE_DIR
 set -uo pipefail
+source "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/lib.sh"
 stella="$(readlink -f "$1")"
 source_dir="$2"
-fails=0
-check() { # description, condition...
-  local what="$1"; shift
-  if "$@"; then echo "ok   $what"; else echo "FAIL $what"; fails=$((fails + 1)); fi
-}
 out="$(mktemp)"
 trap 'rm -f "$out"' EXIT
 

@@ -3,74 +3,12 @@
 # it and checks the located error (or warning), the exit code and what came back.
 # Usage: faults-input.sh PATH/TO/stella CASE      (CASE: one of the functions case_* below)
 set -uo pipefail
+source "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/lib.sh"
 stella="$(readlink -f "$1")"
 name="$2"
 dir="$(mktemp -d)"
 trap 'rm -rf "$dir"' EXIT
 cd "$dir" || exit 1
-fails=0
-check() { # description, condition...
-  local what="$1"; shift
-  if "$@"; then echo "ok   $what"; else echo "FAIL $what"; fails=$((fails + 1)); fi
-}
-
-# A plane-strain bar of two QUAD4 (LEFT fixed in X, BOTTOM in Y, RIGHT loaded).
-write_mesh() {
-  cat > bar.mail <<'MAIL'
-TITRE
- bar of two QUAD4
-FINSF
-%
-COOR_2D
-N1 0 0
-N2 1 0
-N3 2 0
-N4 0 1
-N5 1 1
-N6 2 1
-FINSF
-%
-QUAD4
-M1 N1 N2 N5 N4
-M2 N2 N3 N6 N5
-FINSF
-%
-SEG2
-M3 N3 N6
-FINSF
-%
-GROUP_MA
-RIGHT
-  M3
-FINSF
-%
-GROUP_NO
-LEFT
-  N1
-  N4
-FINSF
-%
-GROUP_NO
-BOTTOM
-  N1
-FINSF
-%
-FIN
-MAIL
-}
-
-# The start of a study on the bar; $1 is the DEFI_MATERIAU ELAS content.
-write_study_start() {
-  cat > "$1" <<COMM
-DEBUT()
-MA = LIRE_MAILLAGE(FORMAT='ASTER', UNITE=20)
-MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='D_PLAN'))
-ACIER = DEFI_MATERIAU(ELAS=_F(${2:-E=200000.0, NU=0.3}))
-CM = AFFE_MATERIAU(MAILLAGE=MA, AFFE=_F(TOUT='OUI', MATER=ACIER))
-CH = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=(_F(GROUP_NO='LEFT', DX=0.0), _F(GROUP_NO='BOTTOM', DY=0.0)),
-                    PRES_REP=_F(GROUP_MA='RIGHT', PRES=-100.0))
-COMM
-}
 
 run_study() { # comm file [extra export lines]: runs it with the mesh on unit 20
   local comm="$1"; shift
@@ -82,8 +20,8 @@ run_study() { # comm file [extra export lines]: runs it with the mesh on unit 20
 }
 
 case_list_reel_decreasing() {
-  write_mesh
-  write_study_start lr.comm
+  write_bar_mesh
+  write_bar_study lr.comm
   cat >> lr.comm <<'COMM'
 L = DEFI_LIST_REEL(VALE=(0.0, 0.5, 0.3, 1.0))
 FIN()
@@ -95,8 +33,8 @@ COMM
 }
 
 case_list_inst_repeated() {
-  write_mesh
-  write_study_start li.comm
+  write_bar_mesh
+  write_bar_study li.comm
   cat >> li.comm <<'COMM'
 LI = DEFI_LIST_INST(DEFI_LIST=_F(VALE=(0.0, 1.0, 1.0, 2.0)))
 FIN()
@@ -105,33 +43,29 @@ COMM
   check "DEFI_LIST_INST repeated instant: LIST_INST_2 at VALE" grep -q "li.comm:8:34: error: the instants must increase strictly: 1 follows 1" li.mess
 }
 
+elas_refused() { # stem, ELAS content, description, the error expected in stem.mess (grep pattern)
+  write_bar_study "$1.comm" "$2"
+  echo "FIN()" >> "$1.comm"
+  run_study "$1.comm"
+  check "$3" grep -q "$4" "$1.mess"
+}
+
 case_material_nan() {
-  write_mesh
-  write_study_start nan.comm "E=float('nan'), NU=0.3"
-  echo "FIN()" >> nan.comm
-  run_study nan.comm
-  check "E=nan refused at E: MATER_4" grep -q "nan.comm:4:31: error: ELAS E = nan is not a finite number \[MATER_4\]" nan.mess
-  write_study_start inf.comm "E=1e400, NU=0.3"
-  echo "FIN()" >> inf.comm
-  run_study inf.comm
-  check "E=1e400 (inf) refused at E" grep -q "inf.comm:4:31: error: ELAS E = inf is not a finite number" inf.mess
-  write_study_start nu.comm "E=200000.0, NU=0.5"
-  echo "FIN()" >> nu.comm
-  run_study nu.comm
-  check "NU=0.5 refused at NU: MATER_2" grep -q "nu.comm:4:43: error: ELAS NU = 0.5: -1 < NU < 0.5" nu.mess
-  write_study_start rho.comm "E=200000.0, NU=0.3, RHO=float('nan')"
-  echo "FIN()" >> rho.comm
-  run_study rho.comm
-  check "RHO=nan refused at RHO: MATER_4" grep -q "rho.comm:4:51: error: ELAS RHO = nan is not a finite number" rho.mess
-  write_study_start e0.comm "E=0.0, NU=0.3"
-  echo "FIN()" >> e0.comm
-  run_study e0.comm
-  check "E=0 refused at E" grep -q "e0.comm:4:31: error: ELAS E = 0: E > 0 is expected" e0.mess
+  write_bar_mesh
+  elas_refused nan "E=float('nan'), NU=0.3" "E=nan refused at E: MATER_4" \
+    "nan.comm:4:31: error: ELAS E = nan is not a finite number \[MATER_4\]"
+  elas_refused inf "E=1e400, NU=0.3" "E=1e400 (inf) refused at E" \
+    "inf.comm:4:31: error: ELAS E = inf is not a finite number"
+  elas_refused nu "E=200000.0, NU=0.5" "NU=0.5 refused at NU: MATER_2" \
+    "nu.comm:4:43: error: ELAS NU = 0.5: -1 < NU < 0.5"
+  elas_refused rho "E=200000.0, NU=0.3, RHO=float('nan')" "RHO=nan refused at RHO: MATER_4" \
+    "rho.comm:4:51: error: ELAS RHO = nan is not a finite number"
+  elas_refused e0 "E=0.0, NU=0.3" "E=0 refused at E" "e0.comm:4:31: error: ELAS E = 0: E > 0 is expected"
 }
 
 case_formule_location() {
-  write_mesh
-  write_study_start fo.comm
+  write_bar_mesh
+  write_bar_study fo.comm
   cat >> fo.comm <<'COMM'
 RAMPE = FORMULE(VALE='1.0/(INST-0.5)', NOM_PARA='INST')
 L = DEFI_LIST_REEL(VALE=(0.0, 0.5, 1.0))
@@ -144,7 +78,7 @@ COMM
   check "the note names the calling command" grep -q "note: while running STAT_NON_LINE at .*fo.comm:10:7" fo.mess
   check "no <expression> location left" test "$(grep -c '<expression>' fo.mess)" -eq 0
   # a formula text built by the command file is not in the file verbatim: the note says where
-  write_study_start fv.comm
+  write_bar_study fv.comm
   cat >> fv.comm <<'COMM'
 texte = '1.0/' + '(INST-0.5)'
 RAMPE = FORMULE(VALE=texte, NOM_PARA='INST')
@@ -159,8 +93,8 @@ COMM
 }
 
 case_unit_formats() {
-  write_mesh
-  write_study_start med8.comm
+  write_bar_mesh
+  write_bar_study med8.comm
   cat >> med8.comm <<'COMM'
 IMPR_RESU(FORMAT='MED', UNITE=8, RESU=_F(MAILLAGE=MA))
 FIN()
@@ -170,7 +104,7 @@ COMM
   check "MED to unit 8: exit 2 (refused at validation)" test "$code" -eq 2
   "$stella" check med8.comm >out.txt 2>err.txt
   check "MED to unit 8: stella check refuses it too" grep -q "UNIT_3" err.txt
-  write_study_start mixed.comm
+  write_bar_study mixed.comm
   cat >> mixed.comm <<'COMM'
 T = CREA_TABLE(LISTE=(_F(PARA='INST', LISTE_R=(0.5, 1.0)),))
 IMPR_RESU(FORMAT='MED', UNITE=80, RESU=_F(MAILLAGE=MA))
@@ -179,7 +113,7 @@ FIN()
 COMM
   run_study mixed.comm "F rmed mixed.rmed R 80"
   check "IMPR_TABLE to the MED unit 80: UNIT_3 naming the first writer" grep -q "mixed.comm:10:21: error: IMPR_TABLE text (FORMAT='RESULTAT', IMPR_TABLE) to unit 80, which already receives FORMAT='MED' (at .*mixed.comm:9:" mixed.mess
-  write_study_start resu6.comm
+  write_bar_study resu6.comm
   cat >> resu6.comm <<'COMM'
 RES = MECA_STATIQUE(MODELE=MO, CHAM_MATER=CM, EXCIT=_F(CHARGE=CH))
 IMPR_RESU(FORMAT='RESULTAT', UNITE=6, RESU=_F(RESULTAT=RES, NOM_CHAM='DEPL', NOM_CMP='DX'))
@@ -192,8 +126,8 @@ COMM
 }
 
 case_unit_undeclared() {
-  write_mesh
-  write_study_start neg.comm
+  write_bar_mesh
+  write_bar_study neg.comm
   cat >> neg.comm <<'COMM'
 IMPR_RESU(FORMAT='MED', UNITE=-7, RESU=_F(MAILLAGE=MA))
 FIN()
@@ -203,7 +137,7 @@ COMM
   check "UNITE=-7: exit 2" test "$code" -eq 2
   "$stella" check neg.comm >out.txt 2>err.txt
   check "UNITE=-7: stella check refuses it" grep -q "neg.comm:8:25: error: UNITE=-7 is not a unit number" err.txt
-  write_study_start undecl.comm
+  write_bar_study undecl.comm
   cat >> undecl.comm <<'COMM'
 IMPR_RESU(FORMAT='MED', UNITE=33, RESU=_F(MAILLAGE=MA))
 FIN()

@@ -4,15 +4,10 @@
 # diagnostic words and exit codes.
 # Usage: export-errors.sh PATH/TO/stella
 set -uo pipefail
+source "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/lib.sh"
 stella="$(readlink -f "$1")"
 dir="$(mktemp -d)"
 trap 'rm -rf "$dir"' EXIT
-fails=0
-passes=0
-check() { # description, condition...
-  local what="$1"; shift
-  if "$@"; then echo "ok   $what"; passes=$((passes + 1)); else echo "FAIL $what"; fails=$((fails + 1)); fi
-}
 
 cd "$dir"
 printf 'DEBUT()\nFIN()\n' > ok.comm
@@ -127,62 +122,15 @@ check "--reference-only without reference lines: NO_TEST_RESU" grep -q -- "--- D
 
 # Post-processing on a plane-strain bar of two QUAD4 pulled by a pressure of -100 on its right
 # edge: uniform SIXX = 100, SIZZ = nu SIXX = 30, VMIS = sqrt(7900), EPXX = (1 - nu^2) 100 / E.
-cat > bar.mail <<'MAIL'
-TITRE
- bar of two QUAD4
-FINSF
-%
-COOR_2D
-N1 0 0
-N2 1 0
-N3 2 0
-N4 0 1
-N5 1 1
-N6 2 1
-FINSF
-%
-QUAD4
-M1 N1 N2 N5 N4
-M2 N2 N3 N6 N5
-FINSF
-%
-SEG2
-M3 N3 N6
-FINSF
-%
-GROUP_MA
-RIGHT
-  M3
-FINSF
-%
-GROUP_NO
-LEFT
-  N1
-  N4
-FINSF
-%
-GROUP_NO
-BOTTOM
-  N1
-FINSF
-%
-GROUP_NO
+write_bar_mesh 'GROUP_NO
 TOP
   N4
   N5
   N6
 FINSF
-%
-FIN
-MAIL
-cat > post.comm <<'COMM'
-DEBUT()
-MA = LIRE_MAILLAGE(FORMAT='ASTER', UNITE=20)
-MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='D_PLAN'))
-ACIER = DEFI_MATERIAU(ELAS=_F(E=200000.0, NU=0.3))
-CM = AFFE_MATERIAU(MAILLAGE=MA, AFFE=_F(TOUT='OUI', MATER=ACIER))
-CH = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=(_F(GROUP_NO='LEFT', DX=0.0), _F(GROUP_NO='BOTTOM', DY=0.0)),
-                    PRES_REP=_F(GROUP_MA='RIGHT', PRES=-100.0))
+%'
+write_bar_study post.comm
+cat >> post.comm <<'COMM'
 RES = MECA_STATIQUE(MODELE=MO, CHAM_MATER=CM, EXCIT=_F(CHARGE=CH))
 RES = CALC_CHAMP(reuse=RES, RESULTAT=RES, CONTRAINTE=('SIEF_ELNO', 'SIEF_NOEU'),
                  DEFORMATION='EPSI_NOEU', CRITERES='SIEQ_NOEU')

@@ -18,16 +18,12 @@
 #   memory-limit P memory_limit: an allocation beyond it stops the command with MEMORY_1 naming
 #                the limit (exit 3), the earlier MED file comes back; a bad value is EXPORT_11
 set -uo pipefail
+source "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/lib.sh"
 stella="$(readlink -f "$1")"
 case_name="$2"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 dir="$(mktemp -d)"
 trap 'rm -rf "$dir" /tmp/stella-faults-work-$$' EXIT
-fails=0
-check() { # description, condition...
-  local what="$1"; shift
-  if "$@"; then echo "ok   $what"; else echo "FAIL $what"; fails=$((fails + 1)); fi
-}
 cd "$dir"
 work="/tmp/stella-faults-work-$$"
 

@@ -25,23 +25,6 @@
 namespace stella {
 namespace {
 
-// The volume cells of a structured box and its node groups (no skin cells, so that every field
-// covers every cell type, as meshio requires).
-Mesh volumeWithNodeGroups(const StructuredSpec& spec) {
-  const Mesh full = buildStructuredMesh(spec);
-  Mesh m;
-  for (NodeId n = 0; n < full.nodeCount(); ++n) {
-    m.addNode(full.point(n));
-  }
-  for (const CellId c : *full.cellGroup("VOLUME")) {
-    m.addCell(full.cellType(c), full.cellNodes(c));
-  }
-  for (const auto& [name, nodes] : full.nodeGroups()) {
-    m.setNodeGroup(name, nodes);
-  }
-  return m;
-}
-
 const char* const barComm = R"py(DEBUT()
 M = LIRE_MAILLAGE(UNITE=20, FORMAT='MED')
 MO = AFFE_MODELE(MAILLAGE=M, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='3D'))
@@ -180,7 +163,7 @@ print("OK")
 
 TEST(ImprResuNonlinear, MedOfStatNonLineReadByMeshioAndH5py) {
   const auto dir = testing::tempDir("impr_snl");
-  writeMedMesh(dir / "bar.med", volumeWithNodeGroups({CellType::HEXA8, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}}),
+  writeMedMesh(dir / "bar.med", testing::structuredVolume({CellType::HEXA8, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}}),
                "BAR");
   // unit 80 comes back to its --unit path; unit 82 (the deformed mesh, read back from the work
   // directory) is written back to deformed.med
@@ -217,7 +200,7 @@ TEST(ImprResuNonlinear, MedOfStatNonLineReadByMeshioAndH5py) {
 // at 23 characters ("node BARNODE001, compon").
 TEST(ImprResuNonlinear, ConvergenceTableShowsWholeNodeNames) {
   const auto dir = testing::tempDir("impr_snl_names");
-  const Mesh plain = volumeWithNodeGroups({CellType::HEXA8, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}});
+  const Mesh plain = testing::structuredVolume({CellType::HEXA8, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}});
   Mesh named;
   for (NodeId n = 0; n < plain.nodeCount(); ++n) {
     named.addNode(plain.point(n), fmt::format("BARNODE{:03d}", n + 1));

@@ -18,21 +18,6 @@
 namespace stella {
 namespace {
 
-Mesh barVolume() {
-  const Mesh full = buildStructuredMesh({CellType::HEXA8, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}});
-  Mesh m;
-  for (NodeId n = 0; n < full.nodeCount(); ++n) {
-    m.addNode(full.point(n));
-  }
-  for (const CellId c : *full.cellGroup("VOLUME")) {
-    m.addCell(full.cellType(c), full.cellNodes(c));
-  }
-  for (const auto& [name, nodes] : full.nodeGroups()) {
-    m.setNodeGroup(name, nodes);
-  }
-  return m;
-}
-
 const std::string barStudy = R"(DEBUT()
 M = LIRE_MAILLAGE(UNITE=20, FORMAT='MED')
 MO = AFFE_MODELE(MAILLAGE=M, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='3D'))
@@ -64,7 +49,8 @@ print("OK")
 
 TEST(MedVersion, VersionMedIsTheFormatWrittenAndMeshioReadsEach) {
   const auto dir = testing::tempDir("med_version");
-  writeMedMesh(dir / "bar.med", barVolume(), "BAR");
+  writeMedMesh(dir / "bar.med", testing::structuredVolume({CellType::HEXA8, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}}),
+               "BAR");
   const std::string comm =
       barStudy +
       "IMPR_RESU(FORMAT='MED', UNITE=80, RESU=_F(RESULTAT=RESU, NOM_CHAM='DEPL'))\n"
@@ -83,7 +69,8 @@ TEST(MedVersion, VersionMedIsTheFormatWrittenAndMeshioReadsEach) {
 
 TEST(MedVersion, AppendingAnotherVersionIsRefused) {
   const auto dir = testing::tempDir("med_version_mix");
-  writeMedMesh(dir / "bar.med", barVolume(), "BAR");
+  writeMedMesh(dir / "bar.med", testing::structuredVolume({CellType::HEXA8, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}}),
+               "BAR");
   const std::string comm =
       barStudy +
       "IMPR_RESU(FORMAT='MED', UNITE=82, VERSION_MED='3.3.1', RESU=_F(RESULTAT=RESU, NOM_CHAM='DEPL'))\n"

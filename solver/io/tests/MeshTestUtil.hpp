@@ -1,9 +1,10 @@
 #pragma once
-// Helpers for the mesh file tests: a "zoo" mesh holding one cell of every type, a temporary
-// directory, and a field-by-field mesh comparison.
+// Helpers for the mesh file tests: a "zoo" mesh holding one cell of every type, the volume cells
+// of a structured box, a temporary directory, and a field-by-field mesh comparison.
 
 #include "solver/mesh/CellTopology.hpp"
 #include "solver/mesh/Mesh.hpp"
+#include "solver/mesh/StructuredMesher.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,6 +19,25 @@ inline std::filesystem::path tempDir(const std::string& name) {
                    ("stella_" + name + "_" + std::to_string(static_cast<long>(::getpid())));
   std::filesystem::create_directories(dir);
   return dir;
+}
+
+// The volume cells of a structured box without its skin cells (meshio wants every field to cover
+// every cell type of the mesh), with the box's node groups when `withNodeGroups`.
+inline Mesh structuredVolume(const StructuredSpec& spec, bool withNodeGroups = true) {
+  const Mesh full = buildStructuredMesh(spec);
+  Mesh m;
+  for (NodeId n = 0; n < full.nodeCount(); ++n) {
+    m.addNode(full.point(n));
+  }
+  for (const CellId c : *full.cellGroup("VOLUME")) {
+    m.addCell(full.cellType(c), full.cellNodes(c));
+  }
+  if (withNodeGroups) {
+    for (const auto& [name, nodes] : full.nodeGroups()) {
+      m.setNodeGroup(name, nodes);
+    }
+  }
+  return m;
 }
 
 // One cell of every type in `types`, each on its own nodes, shifted along x; groups: VOLUMES

@@ -87,23 +87,9 @@ for i, t in enumerate([0.0, 1.0]):
 print("OK")
 )";
 
-// The hexahedra of a structured box without its skin (meshio wants every field on every cell
-// type of the mesh).
-Mesh volumeOnly() {
-  const Mesh full = buildStructuredMesh({CellType::HEXA8, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}});
-  Mesh m;
-  for (NodeId n = 0; n < full.nodeCount(); ++n) {
-    m.addNode(full.point(n));
-  }
-  for (const CellId c : *full.cellGroup("VOLUME")) {
-    m.addCell(full.cellType(c), full.cellNodes(c));
-  }
-  return m;
-}
-
 TEST(ResultWriters, MedReadByMeshio) {
   const auto dir = testing::tempDir("med_result");
-  const Mesh m = volumeOnly();
+  const Mesh m = testing::structuredVolume({CellType::HEXA8, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}}, false);
   const Result r = makeResult(m);
   ResultOutput out;
   out.resultName = "RESU";

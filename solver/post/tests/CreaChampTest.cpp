@@ -6,24 +6,19 @@
 
 #include "solver/nonlinear/tests/StudyRun.hpp"
 #include "solver/post/FieldConcept.hpp"
+#include "solver/post/tests/PulledCube.hpp"
 
 #include <gtest/gtest.h>
 
 namespace stella {
 namespace {
 
+using testing::kCubeMesh;
 using testing::runStudy;
 
-const char* kMesh = "testcases/plate_plasticity/hexa8.msh";
-
-const std::string kPreamble = R"(
-DEBUT()
-M = LIRE_MAILLAGE(FORMAT='GMSH', UNITE=20)
-M = DEFI_GROUP(reuse=M, MAILLAGE=M, CREA_GROUP_NO=_F(GROUP_MA='X1'))
-MO = AFFE_MODELE(MAILLAGE=M, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='3D'))
-MAT = DEFI_MATERIAU(ELAS=_F(E=200000.0, NU=0.3))
-CM = AFFE_MATERIAU(MAILLAGE=M, AFFE=_F(TOUT='OUI', MATER=MAT))
-BC = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=(_F(GROUP_MA='X0', DX=0.0), _F(GROUP_MA='Y0', DY=0.0),
+const std::string kPreamble =
+    testing::kCubeModel +
+    R"(BC = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=(_F(GROUP_MA='X0', DX=0.0), _F(GROUP_MA='Y0', DY=0.0),
                                           _F(GROUP_MA='Z0', DZ=0.0)))
 PULL = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='X1', DX=1.0e-3))
 RAMP = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0, 2.0, 3.0))
@@ -67,7 +62,7 @@ TEST_RESU(CHAM_ELEM=(
 ))
 FIN()
 )";
-  auto run = runStudy("crea_champ", comm, kMesh);
+  auto run = runStudy("crea_champ", comm, kCubeMesh);
   ASSERT_EQ(run->failure(), FailureKind::None) << run->mess();
   EXPECT_EQ(run->session->counts().testsOk, 20) << run->resu.str();
   EXPECT_EQ(run->session->counts().testsNook, 0) << run->resu.str();
@@ -87,7 +82,7 @@ FIN()
 }
 
 std::string errorOf(const std::string& name, const std::string& call) {
-  auto run = runStudy(name, kPreamble + call + "\nFIN()\n", kMesh);
+  auto run = runStudy(name, kPreamble + call + "\nFIN()\n", kCubeMesh);
   EXPECT_NE(run->failure(), FailureKind::None);
   return run->mess();
 }

@@ -4,6 +4,7 @@
 
 #include "solver/io/RealEditDescriptor.hpp"
 #include "solver/nonlinear/tests/StudyRun.hpp"
+#include "solver/post/tests/PulledCube.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,8 @@
 namespace stella {
 namespace {
 
+using testing::kCubeMesh;
+using testing::kPulledCube;
 using testing::runStudy;
 
 std::string formatted(const std::string& descriptor, double value) {
@@ -41,18 +44,6 @@ TEST(RealEditDescriptor, WritesAsFortranDoes) {
   }
 }
 
-const std::string cubeStudy = R"(
-DEBUT()
-M = LIRE_MAILLAGE(FORMAT='GMSH', UNITE=20)
-M = DEFI_GROUP(reuse=M, MAILLAGE=M, CREA_GROUP_NO=_F(GROUP_MA='X1'))
-MO = AFFE_MODELE(MAILLAGE=M, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='3D'))
-MAT = DEFI_MATERIAU(ELAS=_F(E=200000.0, NU=0.3))
-CM = AFFE_MATERIAU(MAILLAGE=M, AFFE=_F(TOUT='OUI', MATER=MAT))
-BC = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=(_F(GROUP_MA='X0', DX=0.0), _F(GROUP_MA='Y0', DY=0.0),
-                                          _F(GROUP_MA='Z0', DZ=0.0), _F(GROUP_MA='X1', DX=1.0e-3)))
-R = MECA_STATIQUE(MODELE=MO, CHAM_MATER=CM, EXCIT=_F(CHARGE=BC))
-)";
-
 // The first row of the DEPL table after `from` in `resu`.
 std::string firstDeplRow(const std::string& resu, std::size_t from) {
   const auto start = resu.find(" CHAMP DEPL ", from);
@@ -70,14 +61,14 @@ std::string firstDeplRow(const std::string& resu, std::size_t from) {
 TEST(ImprResuFormat, FormatRSetsThePrintedValues) {
   // DX = 1e-3 on every node of X1 (imposed), so its rows' first value is known exactly.
   const std::string comm =
-      cubeStudy +
+      kPulledCube +
       "IMPR_RESU(FORMAT='RESULTAT', RESU=_F(RESULTAT=R, NOM_CHAM='DEPL', GROUP_NO='X1', NOM_CMP='DX'))\n"
       "IMPR_RESU(FORMAT='RESULTAT', RESU=_F(RESULTAT=R, NOM_CHAM='DEPL', GROUP_NO='X1', NOM_CMP='DX',\n"
       "                                     FORMAT_R='F12.6'))\n"
       "IMPR_RESU(FORMAT='RESULTAT', RESU=_F(RESULTAT=R, NOM_CHAM='DEPL', GROUP_NO='X1', NOM_CMP='DX',\n"
       "                                     FORMAT_R='E12.5'))\n"
       "FIN()\n";
-  auto run = runStudy("impr_format_r", comm, "testcases/plate_plasticity/hexa8.msh");
+  auto run = runStudy("impr_format_r", comm, kCubeMesh);
   ASSERT_EQ(run->failure(), FailureKind::None) << run->mess();
   const std::string resu = run->resu.str();
   const std::string byDefault = firstDeplRow(resu, 0);
@@ -90,9 +81,9 @@ TEST(ImprResuFormat, FormatRSetsThePrintedValues) {
 }
 
 TEST(ImprResuFormat, UnknownFormatRIsRefusedAtItsLine) {
-  const std::string comm = cubeStudy + "IMPR_RESU(FORMAT='RESULTAT', RESU=_F(RESULTAT=R, NOM_CHAM='DEPL',\n"
-                                       "          FORMAT_R='G12.5'))\nFIN()\n";
-  auto run = runStudy("impr_format_bad", comm, "testcases/plate_plasticity/hexa8.msh");
+  const std::string comm = kPulledCube + "IMPR_RESU(FORMAT='RESULTAT', RESU=_F(RESULTAT=R, NOM_CHAM='DEPL',\n"
+                                         "          FORMAT_R='G12.5'))\nFIN()\n";
+  auto run = runStudy("impr_format_bad", comm, kCubeMesh);
   EXPECT_NE(run->failure(), FailureKind::None);
   EXPECT_NE(run->mess().find("impr_format_bad.comm:12:"), std::string::npos) << run->mess();
   EXPECT_NE(run->mess().find("FORMAT_R='G12.5' is not an edit descriptor stella writes"), std::string::npos)
@@ -100,10 +91,10 @@ TEST(ImprResuFormat, UnknownFormatRIsRefusedAtItsLine) {
 }
 
 TEST(ImprResuFormat, GmshVersionWrittenOrRefused) {
-  const std::string written = cubeStudy +
+  const std::string written = kPulledCube +
                               "IMPR_RESU(FORMAT='GMSH', UNITE=37, VERSION=2.2, RESU=_F(RESULTAT=R, "
                               "NOM_CHAM='DEPL'))\nFIN()\n";
-  auto run = runStudy("impr_gmsh_22", written, "testcases/plate_plasticity/hexa8.msh");
+  auto run = runStudy("impr_gmsh_22", written, kCubeMesh);
   ASSERT_EQ(run->failure(), FailureKind::None) << run->mess();
   std::ifstream msh(std::filesystem::temp_directory_path() / "stella_impr_gmsh_22" / "fort.37");
   std::string first;
@@ -111,10 +102,10 @@ TEST(ImprResuFormat, GmshVersionWrittenOrRefused) {
   msh >> first >> version;
   EXPECT_EQ(first, "$MeshFormat");
   EXPECT_EQ(version, "2.2");
-  const std::string refused = cubeStudy +
+  const std::string refused = kPulledCube +
                               "IMPR_RESU(FORMAT='GMSH', UNITE=37, VERSION=1.2, RESU=_F(RESULTAT=R, "
                               "NOM_CHAM='DEPL'))\nFIN()\n";
-  auto bad = runStudy("impr_gmsh_12", refused, "testcases/plate_plasticity/hexa8.msh");
+  auto bad = runStudy("impr_gmsh_12", refused, kCubeMesh);
   EXPECT_NE(bad->failure(), FailureKind::None);
   EXPECT_NE(bad->mess().find("VERSION = 1.2"), std::string::npos) << bad->mess();
 }

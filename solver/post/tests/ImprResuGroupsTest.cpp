@@ -3,6 +3,7 @@
 // not restricted yet and say so (alarm IMPR_RESU_4). Cube of testcases/plate_plasticity (HEXA8).
 
 #include "solver/nonlinear/tests/StudyRun.hpp"
+#include "solver/post/tests/PulledCube.hpp"
 
 #include <gtest/gtest.h>
 #include <set>
@@ -11,6 +12,8 @@
 namespace stella {
 namespace {
 
+using testing::kCubeMesh;
+using testing::kPulledCube;
 using testing::runStudy;
 
 // The first words of the rows of the table of `field` in `resu` (node or cell names).
@@ -34,23 +37,14 @@ std::vector<std::string> rowNames(const std::string& resu, const std::string& fi
 }
 
 TEST(ImprResuGroups, ResultatFormatPrintsOnlyTheGroups) {
-  const std::string comm = R"(
-DEBUT()
-M = LIRE_MAILLAGE(FORMAT='GMSH', UNITE=20)
-M = DEFI_GROUP(reuse=M, MAILLAGE=M, CREA_GROUP_NO=_F(GROUP_MA='X1'))
-MO = AFFE_MODELE(MAILLAGE=M, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='3D'))
-MAT = DEFI_MATERIAU(ELAS=_F(E=200000.0, NU=0.3))
-CM = AFFE_MATERIAU(MAILLAGE=M, AFFE=_F(TOUT='OUI', MATER=MAT))
-BC = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=(_F(GROUP_MA='X0', DX=0.0), _F(GROUP_MA='Y0', DY=0.0),
-                                          _F(GROUP_MA='Z0', DZ=0.0), _F(GROUP_MA='X1', DX=1.0e-3)))
-R = MECA_STATIQUE(MODELE=MO, CHAM_MATER=CM, EXCIT=_F(CHARGE=BC))
-IMPR_RESU(FORMAT='RESULTAT', RESU=_F(RESULTAT=R, NOM_CHAM='DEPL', GROUP_NO='X1'))
+  const std::string comm =
+      kPulledCube + R"(IMPR_RESU(FORMAT='RESULTAT', RESU=_F(RESULTAT=R, NOM_CHAM='DEPL', GROUP_NO='X1'))
 IMPR_RESU(FORMAT='RESULTAT', RESU=_F(RESULTAT=R, NOM_CHAM='SIEF_ELGA', GROUP_MA='ALL', NOM_CMP='SIXX'))
 IMPR_RESU(FORMAT='RESULTAT', RESU=_F(RESULTAT=R, NOM_CHAM='SIEF_ELGA', GROUP_NO='X1', NOM_CMP='SIXX'))
 IMPR_RESU(FORMAT='MED', UNITE=80, RESU=_F(RESULTAT=R, NOM_CHAM='DEPL', GROUP_MA='ALL'))
 FIN()
 )";
-  auto run = runStudy("impr_groups", comm, "testcases/plate_plasticity/hexa8.msh");
+  auto run = runStudy("impr_groups", comm, kCubeMesh);
   ASSERT_EQ(run->failure(), FailureKind::None) << run->mess();
   const auto r = run->result("R");
   const Mesh& mesh = *r->mesh;
