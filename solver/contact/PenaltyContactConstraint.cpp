@@ -223,6 +223,28 @@ void PenaltyContactConstraint::correct(const Eigen::VectorXd& u, Eigen::VectorXd
   }
 }
 
+std::string PenaltyContactConstraint::singularCause() const {
+  return "with PENALISATION the matrix holds E_N only for the links that penetrate at the iterate "
+         "(gap < 0): at the first iteration of a step a body that only touches its master, or is apart "
+         "from it, gets no stiffness from contact, so the stiffness must be invertible without the "
+         "contact conditions, as for every discrete algorithm";
+}
+
+std::string PenaltyContactConstraint::noConvergenceNote() const {
+  bool withoutTangent = false;
+  for (const auto& z : definition_->zones) {
+    withoutTangent = withoutTangent || (friction_ && z.resolve && z.frictionMatrixCoefficient == 0.0);
+  }
+  if (!withoutTangent) {
+    return {};
+  }
+  return "with penalised friction and COEF_MATR_FROT = 0 the matrix has no term for the sliding links: "
+         "their friction force COULOMB x E_N x penetration follows the normal forces as a fixed point, "
+         "which converges linearly when the friction changes the normal forces much (COULOMB near 1, a "
+         "stiff contact); COEF_MATR_FROT = 1 adds its derivative to the matrix (notice §3.3.2: it "
+         "accelerates convergence), or raise ITER_GLOB_MAXI";
+}
+
 std::vector<LinkState> PenaltyContactConstraint::resolvedStates(const Eigen::VectorXd& u) const {
   const PenaltyEvaluation e = evaluate(u);
   const Eigen::VectorXd gaps = gapsAt(u);

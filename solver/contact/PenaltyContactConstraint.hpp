@@ -35,6 +35,8 @@ public:
   void correct(const Eigen::VectorXd& u, Eigen::VectorXd& ddu, Eigen::VectorXd& dlambda,
                SaddleSolver& solver) override;
 
+  std::string noConvergenceNote() const override;
+
   // The current factor on E_N (ADAPT_COEF_PENA).
   double penaltyFactor() const { return factor_; }
 
@@ -45,6 +47,7 @@ protected:
   bool acceptResolution(const Eigen::VectorXd& u) override;
   void accepted(const std::vector<LinkState>& rowStates) override;
   bool withFrictionRows() const override { return friction_; }
+  std::string singularCause() const override;
 
 private:
   PenaltyEvaluation evaluate(const Eigen::VectorXd& u) const;
