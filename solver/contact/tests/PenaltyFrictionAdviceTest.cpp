@@ -37,7 +37,8 @@ FIN()
 }
 
 TEST(PenaltyFrictionAdvice, NoConvergenceWithoutTheFrictionTangentNamesCoefMatrFrot) {
-  const auto run = testing::runStudy("plate_slide_coef0", plateSlide(""), "testcases/stability/plate_slide.msh");
+  const auto run =
+      testing::runStudy("plate_slide_coef0", plateSlide(""), "testcases/stability/plate_slide.msh");
   EXPECT_EQ(run->failure(), FailureKind::NoConvergence) << run->mess();
   EXPECT_NE(run->mess().find("SNL_3"), std::string::npos) << run->mess();
   EXPECT_NE(run->mess().find("COEF_MATR_FROT = 1 adds its derivative"), std::string::npos) << run->mess();
