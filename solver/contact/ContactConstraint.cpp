@@ -251,12 +251,10 @@ std::string ContactConstraint::singularNote() const {
                                 definition_->zones[z].slaveGroup, definition_->zones[z].masterGroup));
   }
   return fmt::format(
-      "a body may be held only by contact ({}): the discrete formulation solves the mechanical problem "
-      "without the contact conditions first, so the stiffness must be invertible without them (notice "
-      "§4.4.2): hold the body with springs of small stiffness (modelling DIS_T or 2D_DIS_T on POI1 cells "
-      "made by CREA_MAILLAGE CREA_POI1, stiffness given by AFFE_CARA_ELEM) or impose DDL_IMPO on one of "
-      "its points",
-      fmt::join(zones, "; "));
+      "a body may be held only by contact ({}): {} (notice §4.4.2): hold the body with springs of small "
+      "stiffness (modelling DIS_T or 2D_DIS_T on POI1 cells made by CREA_MAILLAGE CREA_POI1, stiffness "
+      "given by AFFE_CARA_ELEM) or impose DDL_IMPO on one of its points",
+      fmt::join(zones, "; "), singularCause());
 }
 
 } // namespace stella::contact

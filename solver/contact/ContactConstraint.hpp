@@ -60,6 +60,11 @@ protected:
   // The step was accepted with these states (friction history, GLISSIERE links that closed).
   virtual void accepted(const std::vector<LinkState>& rowStates) { (void)rowStates; }
   virtual bool withFrictionRows() const { return false; }
+  // Why the stiffness must be invertible without the contact conditions (singularNote()).
+  virtual std::string singularCause() const {
+    return "the discrete formulation solves the mechanical problem without the contact conditions first, "
+           "so the stiffness must be invertible without them";
+  }
 
   // Gaps of the resolved rows at u, linearised on the current pairing.
   Eigen::VectorXd gapsAt(const Eigen::VectorXd& u) const;

@@ -73,11 +73,17 @@ private:
 // Cholesky factor L of S restricted to the active links, extended one link at a time.
 class ActiveCholesky {
 public:
-  explicit ActiveCholesky(const SchurColumns& s) : s_(s) {}
+  ActiveCholesky(const SchurColumns& s, const VectorXd& compliance, bool symmetric)
+      : s_(s), compliance_(compliance), symmetric_(symmetric) {}
   const std::vector<Index>& links() const { return links_; }
   // Adds a link; false (nothing changed) when its pivot vanishes: the active links are then
-  // linearly dependent.
+  // linearly dependent. An unsymmetric S (penalised friction's tangent) is not factorised link
+  // by link: solve() factorises its active block by LU.
   bool add(Index link) {
+    if (!symmetric_) {
+      links_.push_back(link);
+      return true;
+    }
     const auto n = static_cast<Index>(links_.size());
     VectorXd y(n);
     for (Index a = 0; a < n; ++a) {
@@ -86,7 +92,8 @@ public:
     if (n > 0) {
       l_.topLeftCorner(n, n).triangularView<Eigen::Lower>().solveInPlace(y);
     }
-    const double diagonal = s_.entry(link, link);
+    const double diagonal =
+        s_.entry(link, link) + (compliance_.size() > 0 ? compliance_(link) : 0.0); // S + C
     const double pivot = diagonal - y.squaredNorm();
     scale_ = std::max(scale_, std::abs(diagonal));
     if (!(pivot > 1e-12 * scale_)) {
@@ -107,6 +114,16 @@ public:
   // S_active^-1 b (b ordered like links()).
   VectorXd solve(const VectorXd& b) const {
     const auto n = static_cast<Index>(links_.size());
+    if (!symmetric_) {
+      MatrixXd block(n, n);
+      for (Index a = 0; a < n; ++a) {
+        for (Index c = 0; c < n; ++c) {
+          block(a, c) = s_.entry(links_[static_cast<std::size_t>(a)], links_[static_cast<std::size_t>(c)]);
+        }
+        block(a, a) += compliance_.size() > 0 ? compliance_(links_[static_cast<std::size_t>(a)]) : 0.0;
+      }
+      return block.partialPivLu().solve(b);
+    }
     VectorXd x = b;
     l_.topLeftCorner(n, n).triangularView<Eigen::Lower>().solveInPlace(x);
     l_.topLeftCorner(n, n).triangularView<Eigen::Lower>().transpose().solveInPlace(x);
@@ -115,6 +132,8 @@ public:
 
 private:
   const SchurColumns& s_;
+  const VectorXd& compliance_;
+  bool symmetric_ = true;
   std::vector<Index> links_;
   MatrixXd l_;
   double scale_ = 0.0;
@@ -144,7 +163,7 @@ DualResult solveActiveSet(const ContactProblem& p, StiffnessInverse& k, const Ve
   const double scale = m > 0 ? std::max(q.cwiseAbs().maxCoeff(), std::numeric_limits<double>::min()) : 1.0;
   const double tol = o.tolerance > 0.0 ? o.tolerance : 1e-10 * scale;
   SchurColumns cols(p.A, k, o.rightHandSidesPerSolve);
-  ActiveCholesky chol(cols);
+  ActiveCholesky chol(cols, o.compliance, o.symmetric);
   std::vector<char> active(static_cast<std::size_t>(m), 0);
   std::vector<char> excluded(static_cast<std::size_t>(m), 0);
   // Links waiting to enter: the start's (only they: a link they leave violated enters at the

@@ -87,6 +87,15 @@ struct DualOptions {
   // false: du and finalGap are not computed (saves the final K solve when the caller applies
   // the multipliers itself).
   bool computeDisplacement = true;
+  // CONTRAINTE only: a compliance c_i >= 0 per link (empty: none) added to the diagonal of the
+  // Schur complement, i.e. the regularised complementarity lambda >= 0, gap + c lambda >= 0,
+  // lambda (gap + c lambda) = 0. With c = 1/E_N this is the penalised law lambda = E_N max(0, -gap)
+  // solved on the condensed rows (PENALISATION, PenaltyContactConstraint::correct); the gap
+  // returned is the penetration -c lambda of the active links.
+  Eigen::VectorXd compliance;
+  // CONTRAINTE only: whether K (so S) is symmetric; false (an unsymmetric tangent: penalised
+  // friction with COEF_MATR_FROT) solves the active block by LU instead of Cholesky.
+  bool symmetric = true;
 };
 
 // Initial multipliers (per link) and, when known, w = K^-1 A^T lambda (empty: computed).

@@ -2,6 +2,7 @@
 
 #include "solver/contact/PenaltyContactConstraint.hpp"
 
+#include "solver/contact/SaddleStiffness.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 
 #include <algorithm>
@@ -138,13 +139,110 @@ void PenaltyContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::Vector
   notePenetration_ = e.maxInterpenetration;
 }
 
+namespace {
+
+// The rows `keep` of `a`.
+SparseRows selectRows(const SparseRows& a, const std::vector<Eigen::Index>& keep) {
+  std::vector<Eigen::Triplet<double>> t;
+  for (std::size_t r = 0; r < keep.size(); ++r) {
+    for (SparseRows::InnerIterator it(a, keep[r]); it; ++it) {
+      t.emplace_back(static_cast<int>(r), static_cast<int>(it.col()), it.value());
+    }
+  }
+  SparseRows s(static_cast<Eigen::Index>(keep.size()), a.cols());
+  s.setFromTriplets(t.begin(), t.end());
+  return s;
+}
+
+} // namespace
+
 void PenaltyContactConstraint::correct(const Eigen::VectorXd& u, Eigen::VectorXd& ddu,
                                        Eigen::VectorXd& dlambda, SaddleSolver& solver) {
-  // Penalty: the contact is in the residual and the matrix; nothing to project.
-  (void)u;
-  (void)ddu;
-  (void)dlambda;
-  (void)solver;
+  // The matrix of the solve holds E_N A_i^T A_i for the links active at u (gap < 0): they move
+  // with the penalised law. A link open at u is free in that matrix, so the solve may push it
+  // through the master by what the structure alone would move it (E_N times that is the force
+  // the next residual would see: with E_N 1e7 times the structure's stiffness, Newton then
+  // cycles between two active sets). Its status is resolved here instead, on the condensed
+  // rows of the open links, with the compliance 1/E_N on the diagonal of their Schur
+  // complement: the penalised law lambda = E_N max(0, -gap) written as a regularised dual
+  // problem, solved by the active-set method of CONTRAINTE (which it becomes as E_N grows).
+  const Eigen::Index m = rows_.problem.A.rows();
+  if (m == 0) {
+    return;
+  }
+  const Eigen::VectorXd gap = gapsAt(u);
+  const Eigen::VectorXd moved = gap + rows_.problem.A * ddu;
+  std::vector<Eigen::Index> open;
+  bool entering = false;
+  for (Eigen::Index i = 0; i < m; ++i) {
+    if (!(gap(i) < 0.0) && !rows_.problem.isBilateral(i)) {
+      open.push_back(i);
+      entering = entering || moved(i) < 0.0;
+    }
+  }
+  if (!entering) {
+    return;
+  }
+  const auto n = static_cast<Eigen::Index>(open.size());
+  ContactProblem problem{selectRows(rows_.problem.A, open), Eigen::VectorXd(n), {}};
+  DualOptions options;
+  options.rightHandSidesPerSolve = definition_->settings.rightHandSidesPerSolve;
+  options.iterationFactor = definition_->settings.contactIterationFactor;
+  options.stopIfSingular = false; // the compliance keeps S + C regular
+  options.computeDisplacement = false;
+  options.symmetric = symmetric_; // the tangent of the last factorisation
+  options.compliance.resize(n);
+  for (Eigen::Index r = 0; r < n; ++r) {
+    problem.gap(r) = moved(open[static_cast<std::size_t>(r)]);
+    options.compliance(r) = 1.0 / parameters_.normalPenalty(open[static_cast<std::size_t>(r)]);
+  }
+  SaddleStiffness k(solver, dlambda.size(), ddu.size());
+  DualResult result;
+  try {
+    result = solveActiveSet(problem, k, Eigen::VectorXd::Zero(ddu.size()), options);
+  } catch (const ContactNotConverged& e) {
+    throw UserError(
+        Diagnostic::noConvergence("CONTACT_17",
+                                  fmt::format("the statuses of the penalised contact links did not converge "
+                                              "at INST {} ({} iterations on {} open links)",
+                                              time_, e.result.iterations, n),
+                                  definition_->location)
+            .withNote("raise ITER_CONT_MULT"));
+  }
+  addContactIterations(result.iterations);
+  if (result.lambda.size() == 0 || result.lambda.cwiseAbs().maxCoeff() == 0.0) {
+    return;
+  }
+  // ddu + K^-1 A_open^T lambda: the links that close carry E_N times their penetration.
+  Eigen::VectorXd x;
+  Eigen::VectorXd y;
+  k.solveWithMultipliers(problem.A.transpose() * result.lambda, x, y);
+  ddu += x;
+  if (y.size() == dlambda.size()) {
+    dlambda += y;
+  }
+}
+
+std::string PenaltyContactConstraint::singularCause() const {
+  return "with PENALISATION the matrix holds E_N only for the links that penetrate at the iterate "
+         "(gap < 0): at the first iteration of a step a body that only touches its master, or is apart "
+         "from it, gets no stiffness from contact, so the stiffness must be invertible without the "
+         "contact conditions, as for every discrete algorithm";
+}
+
+std::string PenaltyContactConstraint::noConvergenceNote() const {
+  bool withoutTangent = false;
+  for (const auto& z : definition_->zones) {
+    withoutTangent = withoutTangent || (friction_ && z.resolve && z.frictionMatrixCoefficient == 0.0);
+  }
+  if (!withoutTangent) {
+    return {};
+  }
+  return "with penalised friction and COEF_MATR_FROT = 0 the matrix has no term for the sliding links: "
+         "their friction force COULOMB x E_N x penetration follows the normal forces as a fixed point, "
+         "which converges linearly when the friction changes the normal forces much (COULOMB near 1, a "
+         "stiff contact); COEF_MATR_FROT = 1 adds its derivative to the matrix (notice §3.3.2: it "
+         "accelerates convergence), or raise ITER_GLOB_MAXI";
 }
 
 std::vector<LinkState> PenaltyContactConstraint::resolvedStates(const Eigen::VectorXd& u) const {

@@ -2,7 +2,13 @@
 // Penalised discrete contact in STAT_NON_LINE (ALGO_CONT='PENALISATION' with E_N, notice
 // §3.2.2) and penalised Coulomb friction (FROTTEMENT='COULOMB', ALGO_FROT='PENALISATION' with
 // E_T, COULOMB, COEF_MATR_FROT, §3.3.2): the contact forces and their tangent enter Newton's
-// residual and matrix; nothing is corrected after the linear solve.
+// residual and matrix (the tangent E_N A_i^T A_i of the links active at the iterate: the matrix
+// is K modified by the penalties, as the notice's Figure 3.1.2-1 says); after each linear solve
+// the links open at the iterate that the solve would push through the master are resolved on
+// their condensed rows, with the compliance 1/E_N on the diagonal of their Schur complement
+// (correct(): the penalised law as a regularised dual problem, CONTRAINTE's active-set method).
+// Without it a link open in one iterate penetrates in the next by what the structure alone
+// would move it, and with E_N >> the structure's stiffness Newton cycles between active sets.
 // Friction is incremental: the slip of a step is measured from the displacement at the step
 // start, and the elastic slip -t/E_T of the last accepted step carries the friction force over
 // (a return mapping on the tangential force). The friction tangent of sliding links is
@@ -29,6 +35,8 @@ public:
   void correct(const Eigen::VectorXd& u, Eigen::VectorXd& ddu, Eigen::VectorXd& dlambda,
                SaddleSolver& solver) override;
 
+  std::string noConvergenceNote() const override;
+
   // The current factor on E_N (ADAPT_COEF_PENA).
   double penaltyFactor() const { return factor_; }
 
@@ -39,6 +47,7 @@ protected:
   bool acceptResolution(const Eigen::VectorXd& u) override;
   void accepted(const std::vector<LinkState>& rowStates) override;
   bool withFrictionRows() const override { return friction_; }
+  std::string singularCause() const override;
 
 private:
   PenaltyEvaluation evaluate(const Eigen::VectorXd& u) const;

@@ -81,6 +81,10 @@ public:
   // formulations need springs, notice §4.4.2); empty when it has nothing to say.
   virtual std::string singularNote() const = 0;
 
+  // A note added to the no-convergence error of STAT_NON_LINE (SNL_3) when the constraint knows a
+  // likely cause (penalised friction without its tangent); empty when it has nothing to say.
+  virtual std::string noConvergenceNote() const { return {}; }
+
   // Where the constraint's alarms go (null: none, they stay in the step report).
   void setDiagnosticSink(DiagnosticSink* sink) { sink_ = sink; }
 

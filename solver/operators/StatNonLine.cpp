@@ -297,7 +297,7 @@ Value runStatNonLine(OperatorCall& call) {
       }
       throw UserError(std::move(d));
     }
-    throw UserError(
+    Diagnostic d =
         Diagnostic::noConvergence(
             "SNL_3",
             fmt::format("no convergence from INST {:g} to INST {:g} ({}; RESI_GLOB_RELA = {:.3e} after {} "
@@ -309,7 +309,12 @@ Value runStatNonLine(OperatorCall& call) {
             call.location)
             .withNote(fmt::format("no further cut: {}; refine the list of instants, allow more cuts "
                                   "(DEFI_LIST_INST ECHEC SUBD_NIVEAU), or raise ITER_GLOB_MAXI",
-                                  f.reason)));
+                                  f.reason));
+    if (const std::string note = constraint != nullptr ? constraint->noConvergenceNote() : std::string();
+        !note.empty() && !f.outcome.integrationFailed) {
+      d.withNote(note);
+    }
+    throw UserError(std::move(d));
   }
   return made;
 }

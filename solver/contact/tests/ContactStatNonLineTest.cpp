@@ -216,6 +216,24 @@ TEST(ContactStatNonLine, BodyHeldOnlyByContactGetsTheNoticeAdvice) {
   EXPECT_NE(r.message.find("DIS_T"), std::string::npos);
 }
 
+TEST(ContactStatNonLine, BodyHeldOnlyByContactWithPenaltyGetsTheNoticeAdvice) {
+  // The same with PENALISATION: the blocks only touch (gap 0), so no link penetrates at the first
+  // iteration and the matrix holds no E_N: singular too, and the note says why for penalty.
+  Blocks b;
+  b.gap = 0.0;
+  b.zone = ", ALGO_CONT='PENALISATION', E_N=1.0e6";
+  std::string comm = b.comm();
+  const std::string push = "PUSH = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='B_YMAX', DY=-0.01))";
+  comm.replace(comm.find(push), push.size(),
+               "PUSH = AFFE_CHAR_MECA(MODELE=MO, PRES_REP=_F(GROUP_MA='B_YMAX', PRES=1.0))");
+  const StudyRun r = runStudy("blocks_singular_penalty", b.mesh(2), comm);
+  EXPECT_EQ(r.diagnostic, JobDiagnostic::Error);
+  EXPECT_NE(r.message.find("SOLVE_1"), std::string::npos);
+  EXPECT_NE(r.message.find("held only by contact"), std::string::npos);
+  EXPECT_NE(r.message.find("only for the links that penetrate"), std::string::npos);
+  EXPECT_NE(r.message.find("DIS_T"), std::string::npos);
+}
+
 TEST(ContactStatNonLine, ContinuousFormulationIsRefusedByName) {
   Blocks b;
   b.global = ", FORMULATION='CONTINUE'";

@@ -231,6 +231,41 @@ TEST(DiscreteContact, ConstraintGcpAndPenaltyAgreeWithEnumeration) {
   EXPECT_LT((pen.state.normalForce - lambdaRef).cwiseAbs().maxCoeff(), 1e-3);
 }
 
+TEST(DiscreteContact, ComplianceOnTheSchurIsThePenalisedLaw) {
+  // CONTRAINTE's active set with the compliance 1/E_N on the Schur diagonal solves the penalised
+  // law lambda = E_N max(0, -gap) exactly: the same forces and displacements as Newton on the
+  // penalised equations (E_N = 1e2 ... 1e4, converged to 1e-13), with the Cholesky and with the LU of the
+  // unsymmetric path; as E_N grows it tends to the exact contact solution.
+  const RowCase c;
+  VectorXd lambdaRef;
+  const VectorXd uRef = c.reference(lambdaRef);
+  DenseInverse kinv(c.K);
+  MatrixXd du0 = c.f;
+  kinv.solve(du0);
+  const auto p = c.problem();
+  for (double en : {1.0e2, 1.0e3, 1.0e4}) {
+    PenaltyParameters par;
+    par.normalPenalty = VectorXd::Constant(c.m, en);
+    const auto pen = solvePenaltyNewton(c.K.sparseView(), c.f, p, nullptr, par, sparseSolve(), 50, 1e-13);
+    ASSERT_TRUE(pen.converged) << en;
+    for (bool symmetric : {true, false}) {
+      DualOptions o;
+      o.compliance = VectorXd::Constant(c.m, 1.0 / en);
+      o.symmetric = symmetric;
+      const auto r = solveActiveSet(p, kinv, du0.col(0), o);
+      EXPECT_EQ(r.activeLinks, pen.state.activeLinks) << en;
+      EXPECT_LT((r.lambda - pen.state.normalForce).cwiseAbs().maxCoeff(), 1e-10 * lambdaRef.maxCoeff()) << en;
+      EXPECT_LT((r.du - pen.du).cwiseAbs().maxCoeff(), 1e-12) << en;
+      // the gap returned is the penetration -lambda/E_N of the active links
+      EXPECT_NEAR(r.maxInterpenetration, pen.state.maxInterpenetration, 1e-14) << en;
+    }
+  }
+  DualOptions o;
+  o.compliance = VectorXd::Constant(c.m, 1e-12);
+  const auto r = solveActiveSet(p, kinv, du0.col(0), o);
+  EXPECT_LT((r.lambda - lambdaRef).cwiseAbs().maxCoeff(), 1e-8);
+}
+
 TEST(DiscreteContact, SchurBuiltInBlocksOfNbResol) {
   const RowCase c;
   DenseInverse kinv(c.K);
