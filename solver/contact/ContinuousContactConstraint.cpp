@@ -3,6 +3,7 @@
 #include "solver/contact/ContinuousContactConstraint.hpp"
 
 #include "solver/database/Result.hpp"
+#include "solver/fem/Quadrature.hpp"
 #include "solver/fem/ReferenceElement.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 #include "solver/nonlinear/SaddleSolver.hpp"
@@ -14,27 +15,11 @@ namespace stella::contact {
 
 namespace {
 
-// Newton-Cotes weights of the nodes of a reference cell (the integral of each shape function):
-// the nodes are the integration points of INTEGRATION='AUTO'. Empty for the cells whose
-// weights vanish or are negative at the vertices (TRIA6, QUAD8).
-std::vector<double> nodeWeights(CellType type) {
-  switch (type) {
-  case CellType::SEG2:
-    return {1.0, 1.0};
-  case CellType::SEG3:
-    return {1.0 / 3.0, 1.0 / 3.0, 4.0 / 3.0};
-  case CellType::TRIA3:
-    return {1.0 / 6.0, 1.0 / 6.0, 1.0 / 6.0};
-  case CellType::QUAD4:
-    return {1.0, 1.0, 1.0, 1.0};
-  case CellType::QUAD9: {
-    const double c = 1.0 / 9.0;
-    const double m = 4.0 / 9.0;
-    return {c, c, c, c, m, m, m, m, 16.0 / 9.0};
-  }
-  default:
-    return {};
-  }
+// The slave cell types of INTEGRATION='AUTO': their shape functions have positive integrals
+// (those of the vertices of TRIA6 are zero, of QUAD8 negative).
+bool nodeIntegrable(CellType type) {
+  return type == CellType::SEG2 || type == CellType::SEG3 || type == CellType::TRIA3 ||
+         type == CellType::QUAD4 || type == CellType::QUAD9;
 }
 
 // |J| of a skin cell at the reference point xi (length or area scale).
@@ -85,30 +70,41 @@ void ContinuousContactConstraint::computeWeights() {
     }
     for (CellId c : *cells) {
       const CellType type = mesh.cellType(c);
-      const std::vector<double> w = nodeWeights(type);
-      if (w.empty()) {
+      if (!nodeIntegrable(type)) {
         throw UserError(
             Diagnostic::fatal(
                 "CONTACT_20",
-                fmt::format("STAT_NON_LINE CONTACT: FORMULATION='CONTINUE' with INTEGRATION='AUTO' "
-                            "on {} slave cells (cell {} of '{}') is not implemented yet",
+                fmt::format("STAT_NON_LINE CONTACT: INTEGRATION='AUTO' on {} slave cells (cell {} of "
+                            "'{}') with FORMULATION='CONTINUE' is not implemented yet",
                             name(type), mesh.cellName(c), zone.slaveGroup),
                 zone.location)
-                .withNote("the nodes of TRIA6 and QUAD8 cells have zero or negative Newton-Cotes weights; "
-                          "mesh the slave surface with TRIA3, QUAD4 or QUAD9 (SEG2 or SEG3 in 2D)"));
+                .withNote(
+                    "the shape functions of the vertices of TRIA6 and QUAD8 cells have zero or negative "
+                    "integrals; mesh the slave surface with TRIA3, QUAD4 or QUAD9 (SEG2 or SEG3 in 2D)"));
       }
       const fem::ReferenceElement& ref = fem::referenceElement(type);
+      const fem::QuadratureRule& rule = fem::rigiRule(type, fem::IntegrationRole::Skin);
       const auto nodes = mesh.cellNodes(c);
       std::vector<Point3> x;
       for (NodeId n : nodes) {
         x.push_back(position(n));
       }
-      for (std::size_t k = 0; k < nodes.size(); ++k) {
-        double wk = w[k] * jacobian(ref, x, ref.node(static_cast<int>(k)));
+      // w_i = integral of N_i (x r in AXIS) over the cell, with the skin rule of the pressures:
+      // the consistent nodal forces of a uniform pressure, so that the patch test holds.
+      for (int g = 0; g < rule.size(); ++g) {
+        const Eigen::Vector3d& xi = rule.points[static_cast<std::size_t>(g)];
+        const Eigen::VectorXd n = ref.values(xi);
+        double scale = rule.weights[static_cast<std::size_t>(g)] * jacobian(ref, x, xi);
         if (modelling_ == fem::Modelling::Axisymmetric) {
-          wk *= x[k][0]; // per radian, like the volume integrals
+          double r = 0.0;
+          for (std::size_t k = 0; k < nodes.size(); ++k) {
+            r += n(static_cast<Eigen::Index>(k)) * x[k][0];
+          }
+          scale *= r; // per radian, like the volume integrals
         }
-        nodeWeight[static_cast<std::size_t>(nodes[k])] += wk;
+        for (std::size_t k = 0; k < nodes.size(); ++k) {
+          nodeWeight[static_cast<std::size_t>(nodes[k])] += n(static_cast<Eigen::Index>(k)) * scale;
+        }
       }
     }
   }
@@ -123,7 +119,9 @@ void ContinuousContactConstraint::paired() {
   lagsCStart_.resize(links_.size(), 0.0);
   contactLink_.resize(links_.size(), 0);
   status_.resize(links_.size(), 0);
-  computeWeights();
+  if (weightLink_.size() != links_.size()) {
+    computeWeights(); // once: on the initial configuration, and links are the slave nodes
+  }
   std::vector<char> hasRow(links_.size(), 0);
   for (int k : rows_.link) {
     hasRow[static_cast<std::size_t>(k)] = 1;

@@ -80,12 +80,15 @@ struct Blocks {
   double push = 0.01;
   double young = 1000.0;
   double nu = 0.3;
-  double penalty = 0.0; // COEF_PENA_CONT (0: STANDARD)
-  std::string zone;     // extra ZONE keywords
-  std::string global;   // extra DEFI_CONTACT keywords
+  double penalty = 0.0;  // COEF_PENA_CONT (0: STANDARD)
+  std::string modelling; // 2D: D_PLAN unless given (C_PLAN, AXIS: uniaxial stress, E' = E)
+  std::string zone;      // extra ZONE keywords
+  std::string global;    // extra DEFI_CONTACT keywords
   std::string tests;
   std::string instants = "0.0, 0.1, 0.3, 1.0";
-  double modulus() const { return threeD ? young : young / (1.0 - nu * nu); }
+  double modulus() const {
+    return threeD || modelling == "C_PLAN" || modelling == "AXIS" ? young : young / (1.0 - nu * nu);
+  }
   double stress(double t) const {
     const double closing = std::max(0.0, push * t - gap);
     return penalty > 0.0 ? closing / (2.0 / modulus() + 1.0 / penalty) : modulus() * closing / 2.0;
@@ -116,7 +119,10 @@ struct Blocks {
         "RESU = CALC_CHAMP(reuse=RESU, RESULTAT=RESU, FORCE=('FORC_NODA', 'REAC_NODA'))\n"
         "{}"
         "FIN()\n",
-        threeD ? "3D" : "D_PLAN", young, nu, sym, up, d, push, instants, global, up, up, algo, zone, tests);
+        threeD              ? "3D"
+        : modelling.empty() ? "D_PLAN"
+                            : modelling,
+        young, nu, sym, up, d, push, instants, global, up, up, algo, zone, tests);
   }
   Mesh mesh(int divisions) const { return testing::twoBlocks(cell, divisions, divisions, gap); }
 };
@@ -134,8 +140,10 @@ std::string patchChecks(const Blocks& b, double precision) {
   for (double t : {0.3, 1.0}) {
     s += testResu(t, "DEPL", "LAGS_C", "B_" + up + "MIN", "MIN", -b.stress(t), precision);
     s += testResu(t, "DEPL", "LAGS_C", "B_" + up + "MIN", "MAX", -b.stress(t), precision);
-    s += testResu(t, "CONT_NOEU", "RN", "B_" + up + "MIN", "SOMM", b.stress(t), precision);
-    s += testResu(t, "REAC_NODA", d, "A_" + up + "MIN", "SOMM", b.stress(t), precision);
+    // the contact area: 1, or the integral of r dr over [0, 1] per radian in AXIS
+    const double area = b.modelling == "AXIS" ? 0.5 : 1.0;
+    s += testResu(t, "CONT_NOEU", "RN", "B_" + up + "MIN", "SOMM", area * b.stress(t), precision);
+    s += testResu(t, "REAC_NODA", d, "A_" + up + "MIN", "SOMM", area * b.stress(t), precision);
   }
   return s;
 }
@@ -158,6 +166,19 @@ TEST(ContinuousContact, PlaneStrainPatchTestWithStatusFixedPoint) {
   EXPECT_TRUE(passed(r));
   EXPECT_NE(r.message.find("ALGO_RESO_CONT=POINT_FIXE"), std::string::npos);
   EXPECT_NE(r.message.find("contact status changed"), std::string::npos);
+}
+
+TEST(ContinuousContact, PlaneStressAndAxisymmetricPatchTests) {
+  // AXIS: x is the radius, the blocks are cylinders in uniaxial compression (u_r = nu sigma r /
+  // E); the weights w_i = integral of N_i r over the slave edges (per radian) are the consistent
+  // forces of a uniform pressure, the node on the axis included, so LAGS_C is uniform there too.
+  for (const char* modelling : {"C_PLAN", "AXIS"}) {
+    Blocks b;
+    b.modelling = modelling;
+    b.tests = patchChecks(b, 1e-8);
+    const StudyRun r = runStudy(fmt::format("patch_{}", modelling), b.mesh(4), b.comm());
+    EXPECT_TRUE(passed(r)) << modelling;
+  }
 }
 
 TEST(ContinuousContact, ContactInitDoesNotChangeTheSolution) {
