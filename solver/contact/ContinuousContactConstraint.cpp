@@ -395,6 +395,14 @@ bool ContinuousContactConstraint::acceptResolution(const Eigen::VectorXd& u) {
   return false;
 }
 
+std::string ContinuousContactConstraint::iterationNote() const {
+  int changes = 0;
+  for (std::size_t k = 0; k < status_.size() && k < lastStatus_.size(); ++k) {
+    changes += status_[k] != lastStatus_[k] ? 1 : 0;
+  }
+  return fmt::format("CONT {} act. {} chg pene {:.2e}", noteActive_, changes, notePenetration_);
+}
+
 std::string ContinuousContactConstraint::continuationNote() const {
   return continuation_.empty() ? ContactConstraint::continuationNote() : continuation_;
 }

@@ -49,6 +49,9 @@ public:
   void store(ResultStep& step) const override;
   std::string singularNote() const override;
   std::string continuationNote() const override;
+  // The convergence-table note: nodes in contact, status changes since the last correction (the
+  // criterion of the generalised Newton on the status), largest interpenetration.
+  std::string iterationNote() const override;
 
   // LAGS_C of each link (slave node) of the pairing: the contact pressure, negative in
   // compression; and its integration weight w.
