@@ -8,6 +8,7 @@
 #include "solver/mesh/MeshGeometry.hpp"
 #include "solver/nonlinear/SaddleSolver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -280,28 +281,31 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
   const SparseRows& a = rows_.problem.A;
   const auto mc = static_cast<Eigen::Index>(contact.size());
   const Eigen::Index n = ddu.size();
-  Eigen::MatrixXd x = Eigen::MatrixXd::Zero(n, mc);
-  for (Eigen::Index j = 0; j < mc; ++j) {
-    for (SparseRows::InnerIterator it(a, contact[static_cast<std::size_t>(j)]); it; ++it) {
-      x(it.col(), j) = it.value();
+  // S = A_c K^-1 A_c^T by blocks of columns (one backend call each): n x block doubles at a time.
+  constexpr Eigen::Index block = 64;
+  Eigen::MatrixXd s = Eigen::MatrixXd::Zero(mc, mc);
+  for (Eigen::Index first = 0; first < mc; first += block) {
+    const Eigen::Index cols = std::min(block, mc - first);
+    Eigen::MatrixXd x = Eigen::MatrixXd::Zero(n, cols);
+    for (Eigen::Index j = 0; j < cols; ++j) {
+      for (SparseRows::InnerIterator it(a, contact[static_cast<std::size_t>(first + j)]); it; ++it) {
+        x(it.col(), j) = it.value();
+      }
+    }
+    solver.solveHomogeneous(x); // K^-1 A_c^T
+    for (Eigen::Index i = 0; i < mc; ++i) {
+      for (SparseRows::InnerIterator it(a, contact[static_cast<std::size_t>(i)]); it; ++it) {
+        s.row(i).segment(first, cols) += it.value() * x.row(it.col());
+      }
     }
   }
-  solver.solveHomogeneous(x); // K^-1 A_c^T
   const Eigen::VectorXd g = gapsAt(u);
-  Eigen::MatrixXd s(mc, mc);
   Eigen::VectorXd rhs(mc);
   for (Eigen::Index i = 0; i < mc; ++i) {
     const Eigen::Index row = contact[static_cast<std::size_t>(i)];
     double adu = 0.0;
     for (SparseRows::InnerIterator it(a, row); it; ++it) {
       adu += it.value() * ddu(it.col());
-    }
-    for (Eigen::Index j = 0; j < mc; ++j) {
-      double sij = 0.0;
-      for (SparseRows::InnerIterator it(a, row); it; ++it) {
-        sij += it.value() * x(it.col(), j);
-      }
-      s(i, j) = sij;
     }
     rhs(i) = g(row) + adu;
   }
@@ -310,7 +314,9 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
   const double scale = d.cwiseAbs().maxCoeff();
   for (Eigen::Index p = 0; p < mc; ++p) {
     if (!(std::fabs(d(p)) > 1e-12 * scale)) {
-      const Eigen::Index row = contact[static_cast<std::size_t>(ldlt.transpositionsP().indices()(p))];
+      const Eigen::PermutationMatrix<Eigen::Dynamic> perm(ldlt.transpositionsP());
+      const Eigen::PermutationMatrix<Eigen::Dynamic> inverse(perm.inverse());
+      const Eigen::Index row = contact[static_cast<std::size_t>(inverse.indices()(p))];
       const auto& l = links_[static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(row)])];
       throw UserError(
           Diagnostic::fatal(
