@@ -81,6 +81,9 @@ ContinuousZone readContinuousZone(const KeywordTree& z) {
   refusePresent(z, "PENE_MAXI", c.refused);
   refusePresent(z, "SEUIL_INIT", c.refused);
   refusePresent(z, "SANS_GROUP_NO_FR", c.refused);
+  if (z.realOr("TOLE_INTERP", 0.0) != 0.0) {
+    c.refused.push_back({"TOLE_INTERP (other than its default 0)", z.locationOf("TOLE_INTERP")});
+  }
   return c;
 }
 

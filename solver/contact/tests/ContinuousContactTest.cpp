@@ -287,6 +287,8 @@ TEST(ContinuousContact, WhatIsNotImplementedIsRefusedNamingTheKeyword) {
       {"", ", INTEGRATION='GAUSS'", "INTEGRATION='GAUSS'"},
       {"", ", ADAPTATION='ADAPT_COEF'", "ADAPTATION='ADAPT_COEF'"},
       {", ALGO_RESO_GEOM='NEWTON'", "", "ALGO_RESO_GEOM='NEWTON'"},
+      {"", ", RESOLUTION='NON', TOLE_INTERP=0.1", "TOLE_INTERP (other than its default 0)"},
+      {"", ", GLISSIERE='OUI'", "GLISSIERE='OUI'"},
   };
   for (const auto& c : cases) {
     Blocks b;
