@@ -65,7 +65,9 @@ std::string ContactConstraint::effects() const {
   for (const auto& z : definition_->zones) {
     slaves += zoneSlaveNodes(*definition_->mesh, z).size();
   }
-  return fmt::format("contact DISCRETE {}, {} zone(s), {} slave node(s), {}, {}", resolutionEffects(),
+  const char* formulation =
+      definition_->settings.formulation == Formulation::Continue ? "CONTINUE" : "DISCRETE";
+  return fmt::format("contact {} {}, {} zone(s), {} slave node(s), {}, {}", formulation, resolutionEffects(),
                      definition_->zones.size(), slaves,
                      definition_->hasFriction() ? "Coulomb friction" : "no friction", loop);
 }

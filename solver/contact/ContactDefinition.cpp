@@ -49,6 +49,62 @@ ContactAlgorithm algorithmFromName(const std::string& s) {
   return ContactAlgorithm::Constraint;
 }
 
+// A keyword whose value is not implemented yet is recorded with its location.
+void refuseUnless(const KeywordTree& kw, const std::string& name, const std::string& allowed,
+                  std::vector<Unimplemented>& refused) {
+  if (kw.has(name) && kw.textOr(name, allowed) != allowed) {
+    refused.push_back({fmt::format("{}='{}'", name, kw.textOr(name, allowed)), kw.locationOf(name)});
+  }
+}
+
+void refusePresent(const KeywordTree& kw, const std::string& name, std::vector<Unimplemented>& refused) {
+  if (kw.has(name)) {
+    refused.push_back({name, kw.locationOf(name)});
+  }
+}
+
+ContinuousZone readContinuousZone(const KeywordTree& z) {
+  ContinuousZone c;
+  c.augmentation = z.realOr("COEF_CONT", 100.0);
+  c.penalty = z.realOr("COEF_PENA_CONT", 0.0);
+  const std::string init = z.textOr("CONTACT_INIT", "INTERPENETRE");
+  c.init = init == "OUI" ? ContactInit::Yes : init == "NON" ? ContactInit::No : ContactInit::Interpenetrated;
+  c.initDistance = z.realOr("DIST_MAXI", -1.0);
+  c.adaptation = z.textOr("ADAPTATION", "CYCLAGE");
+  c.adaptationAt = z.locationOf("ADAPTATION");
+  refuseUnless(z, "INTEGRATION", "AUTO", c.refused);
+  refuseUnless(z, "DIST_POUTRE", "NON", c.refused);
+  refuseUnless(z, "DIST_COQUE", "NON", c.refused);
+  refuseUnless(z, "GLISSIERE", "NON", c.refused);
+  refusePresent(z, "DIST_MAIT", c.refused);
+  refusePresent(z, "DIST_ESCL", c.refused);
+  refusePresent(z, "PENE_MAXI", c.refused);
+  refusePresent(z, "SEUIL_INIT", c.refused);
+  refusePresent(z, "SANS_GROUP_NO_FR", c.refused);
+  if (z.realOr("TOLE_INTERP", 0.0) != 0.0) {
+    c.refused.push_back({"TOLE_INTERP (other than its default 0)", z.locationOf("TOLE_INTERP")});
+  }
+  return c;
+}
+
+ContinuousSettings readContinuousSettings(const KeywordTree& kw) {
+  ContinuousSettings c;
+  c.statusLoop =
+      kw.textOr("ALGO_RESO_CONT", "NEWTON") == "POINT_FIXE" ? StatusLoop::FixedPoint : StatusLoop::Newton;
+  c.iterationsPerNode = kw.textOr("ITER_CONT_TYPE", "MAXI") == "MULT";
+  c.maxStatusIterations = static_cast<int>(kw.integerOr("ITER_CONT_MAXI", 30));
+  c.statusIterationFactor = static_cast<int>(kw.integerOr("ITER_CONT_MULT", 4));
+  refuseUnless(kw, "ALGO_RESO_GEOM", "POINT_FIXE", c.refused);
+  if (kw.has("RESI_CONT") && kw.realOr("RESI_CONT", -1.0) != -1.0) {
+    c.refused.push_back({"RESI_CONT (other than its default -1)", kw.locationOf("RESI_CONT")});
+  }
+  if (kw.integerOr("CONT_STAT_ELAS", 0) != 0) {
+    c.refused.push_back({"CONT_STAT_ELAS > 0", kw.locationOf("CONT_STAT_ELAS")});
+  }
+  refuseUnless(kw, "STOP_INTERP", "NON", c.refused);
+  return c;
+}
+
 ContactZone readZone(const KeywordTree& z, Formulation formulation, bool friction) {
   ContactZone zone;
   zone.location = z.location();
@@ -93,6 +149,9 @@ ContactZone readZone(const KeywordTree& z, Formulation formulation, bool frictio
   zone.coulomb = z.realOr("COULOMB", 0.0);
   zone.tangentPenalty = z.realOr("E_T", 0.0);
   zone.frictionMatrixCoefficient = z.realOr("COEF_MATR_FROT", 0.0);
+  if (formulation == Formulation::Continue) {
+    zone.continuous = readContinuousZone(z);
+  }
   return zone;
 }
 
@@ -103,6 +162,7 @@ ContactSettings readSettings(const KeywordTree& kw) {
                   : formulation == "LIAISON_UNIL" ? Formulation::LiaisonUnil
                                                   : Formulation::Discrete;
   s.friction = kw.textOr("FROTTEMENT", "SANS") == "COULOMB";
+  s.frictionAt = kw.locationOf("FROTTEMENT");
   s.stopInterpenetration = kw.textOr("STOP_INTERP", "NON") == "OUI";
   s.smoothing = kw.textOr("LISSAGE", "NON") == "OUI";
   s.checkNormals = kw.textOr("VERI_NORM", "OUI") == "OUI";
@@ -125,7 +185,9 @@ ContactSettings readSettings(const KeywordTree& kw) {
   s.dirichletPreconditioner = kw.textOr("PRE_COND", "SANS") == "DIRICHLET";
   s.preconditionerResidual = kw.realOr("COEF_RESI", -1.0);
   s.preconditionerMaxIterations = static_cast<int>(kw.integerOr("ITER_PRE_MAXI", 0));
-  s.continueGeometryAlgorithm = kw.textOr("ALGO_RESO_GEOM", "POINT_FIXE");
+  if (s.formulation == Formulation::Continue) {
+    s.continuous = readContinuousSettings(kw);
+  }
   return s;
 }
 

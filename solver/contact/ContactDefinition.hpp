@@ -32,6 +32,26 @@ enum class ContactAlgorithm { Constraint, Gcp, Penalty, Standard, ContinuePenalt
 enum class GeometricUpdate { Automatic, Controlled, None };                               // REAC_GEOM
 enum class LineSearch { Admissible, NonAdmissible };                                      // RECH_LINEAIRE
 
+enum class ContactInit { Yes, Interpenetrated, No }; // CONTACT_INIT (CONTINUE)
+
+// A keyword value the catalogue accepts that stella does not implement yet: STAT_NON_LINE
+// refuses it (CONTACT_20) at the keyword's location.
+struct Unimplemented {
+  std::string what;
+  SourceLocation location;
+};
+
+// The keywords of a ZONE of FORMULATION='CONTINUE' (ignored by the other formulations).
+struct ContinuousZone {
+  double augmentation = 100.0;                     // COEF_CONT (ALGO_CONT='STANDARD')
+  double penalty = 0.0;                            // COEF_PENA_CONT (ALGO_CONT='PENALISATION')
+  ContactInit init = ContactInit::Interpenetrated; // CONTACT_INIT
+  double initDistance = -1.0;                      // DIST_MAXI (< 0: no limit)
+  std::string adaptation = "CYCLAGE";              // ADAPTATION
+  SourceLocation adaptationAt;
+  std::vector<Unimplemented> refused; // INTEGRATION other than AUTO, DIST_*, GLISSIERE...
+};
+
 // One ZONE occurrence.
 struct ContactZone {
   std::string masterGroup; // GROUP_MA_MAIT
@@ -58,13 +78,26 @@ struct ContactZone {
   double coulomb = 0.0;                   // COULOMB
   double tangentPenalty = 0.0;            // E_T
   double frictionMatrixCoefficient = 0.0; // COEF_MATR_FROT
+  ContinuousZone continuous;              // FORMULATION='CONTINUE'
   SourceLocation location;
+};
+
+enum class StatusLoop { Newton, FixedPoint }; // ALGO_RESO_CONT (CONTINUE)
+
+// The global keywords of FORMULATION='CONTINUE'.
+struct ContinuousSettings {
+  StatusLoop statusLoop = StatusLoop::Newton; // ALGO_RESO_CONT
+  bool iterationsPerNode = false;             // ITER_CONT_TYPE='MULT'
+  int maxStatusIterations = 30;               // ITER_CONT_MAXI
+  int statusIterationFactor = 4;              // ITER_CONT_MULT
+  std::vector<Unimplemented> refused;         // ALGO_RESO_GEOM='NEWTON', RESI_CONT, ...
 };
 
 // Global keywords.
 struct ContactSettings {
   Formulation formulation = Formulation::Discrete;
-  bool friction = false;                                        // FROTTEMENT
+  bool friction = false; // FROTTEMENT
+  SourceLocation frictionAt;
   bool stopInterpenetration = false;                            // STOP_INTERP
   bool smoothing = false;                                       // LISSAGE
   bool checkNormals = true;                                     // VERI_NORM
@@ -81,7 +114,7 @@ struct ContactSettings {
   bool dirichletPreconditioner = false;                         // PRE_COND='DIRICHLET'
   double preconditionerResidual = -1.0;                         // COEF_RESI
   int preconditionerMaxIterations = 0;                          // ITER_PRE_MAXI
-  std::string continueGeometryAlgorithm = "POINT_FIXE";         // ALGO_RESO_GEOM (kept for CONTINUE)
+  ContinuousSettings continuous;                                // FORMULATION='CONTINUE'
 };
 
 class ContactDefinition : public ConceptData {

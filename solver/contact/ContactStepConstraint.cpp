@@ -5,6 +5,7 @@
 
 #include "catalog/KeywordTree.hpp"
 #include "interpreter/Diagnostics.hpp"
+#include "solver/contact/ContinuousContactConstraint.hpp"
 #include "solver/contact/DualContactConstraint.hpp"
 #include "solver/contact/PenaltyContactConstraint.hpp"
 #include "solver/functions/InstantList.hpp"
@@ -93,6 +94,47 @@ std::optional<ContactAlgorithm> resolvedAlgorithm(const ContactDefinition& def) 
   return algorithm;
 }
 
+void refuse(const std::vector<contact::Unimplemented>& refused) {
+  if (!refused.empty()) {
+    notImplemented(fmt::format("{} with FORMULATION='CONTINUE'", refused.front().what),
+                   refused.front().location,
+                   "remove the keyword or give its default value; see doc/contact.md, \"Continuous "
+                   "formulation\", for what is implemented");
+  }
+}
+
+// FORMULATION='CONTINUE': what is not implemented yet is refused, naming the keyword.
+std::unique_ptr<contact::ContactConstraint> makeContinuous(std::shared_ptr<const ContactDefinition> def,
+                                                           const MechanicalSystem& system,
+                                                           const std::optional<FailurePolicy>& policy,
+                                                           const SourceLocation& at) {
+  refuse(def->settings.continuous.refused);
+  if (def->hasFriction()) {
+    notImplemented("FROTTEMENT='COULOMB' with FORMULATION='CONTINUE'", def->settings.frictionAt,
+                   "frictionless continuous contact (FROTTEMENT='SANS') is available; friction is available "
+                   "with FORMULATION='DISCRETE', ALGO_CONT='PENALISATION'");
+  }
+  for (const auto& z : def->zones) {
+    refuse(z.continuous.refused);
+    if (z.algorithm == ContactAlgorithm::Lac) {
+      notImplemented("ALGO_CONT='LAC' with FORMULATION='CONTINUE'", z.location,
+                     "use ALGO_CONT='STANDARD' or 'PENALISATION'");
+    }
+    if (z.continuous.adaptation != "NON" && z.continuous.adaptation != "CYCLAGE") {
+      notImplemented(fmt::format("ADAPTATION='{}' with FORMULATION='CONTINUE'", z.continuous.adaptation),
+                     z.continuous.adaptationAt,
+                     "the automatic COEF_CONT/COEF_PENA_CONT is not implemented: use ADAPTATION='NON' or "
+                     "'CYCLAGE' and give COEF_CONT or COEF_PENA_CONT");
+    }
+  }
+  if (policy) {
+    notImplemented("DEFI_LIST_INST EVENEMENT='INTERPENETRATION' with FORMULATION='CONTINUE'", at,
+                   "remove the INTERPENETRATION event");
+  }
+  return std::make_unique<contact::ContinuousContactConstraint>(std::move(def), system.dofs(),
+                                                                system.model().modelling);
+}
+
 std::optional<FailurePolicy> interpenetrationPolicy(const KeywordTree& kw) {
   if (!kw.has("INCREMENT")) {
     return std::nullopt;
@@ -119,15 +161,18 @@ std::unique_ptr<StepConstraint> makeContactConstraint(const KeywordTree& statNon
   const SourceLocation at = statNonLine.locationOf("CONTACT");
   auto def = conceptData<ContactDefinition>(statNonLine.conceptValue("CONTACT"));
   STELLA_ASSERT(def != nullptr, "CONTACT holds no contact definition");
-  if (def->settings.formulation != contact::Formulation::Discrete) {
-    notImplemented(def->settings.formulation == contact::Formulation::Continue ? "FORMULATION='CONTINUE'"
-                                                                               : "FORMULATION='LIAISON_UNIL'",
-                   def->location,
-                   "FORMULATION='DISCRETE' (ALGO_CONT='CONTRAINTE', 'GCP' or 'PENALISATION') is available");
+  if (def->settings.formulation == contact::Formulation::LiaisonUnil) {
+    notImplemented("FORMULATION='LIAISON_UNIL'", def->location,
+                   "FORMULATION='DISCRETE' or 'CONTINUE' are available");
   }
   checkAgainstSystem(*def, system, at);
-  const std::optional<ContactAlgorithm> algorithm = resolvedAlgorithm(*def);
   const std::optional<FailurePolicy> policy = interpenetrationPolicy(statNonLine);
+  if (def->settings.formulation == contact::Formulation::Continue) {
+    auto c = makeContinuous(def, system, policy, at);
+    c->initialize();
+    return c;
+  }
+  const std::optional<ContactAlgorithm> algorithm = resolvedAlgorithm(*def);
   std::unique_ptr<contact::ContactConstraint> c;
   if (!algorithm) {
     c = std::make_unique<GapMeasurement>(def, system.dofs());

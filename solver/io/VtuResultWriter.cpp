@@ -5,7 +5,8 @@
 // Values: a component that a field does not define on an entity (partial fields, cells without
 // Gauss points, entities past the field's support) is NaN, so that ParaView shows the field's
 // support instead of a false 0. Two-component displacement-like fields (DX, DY without DZ: 2D
-// models) get DZ = 0, so that the array is a 3-vector that "Warp By Vector" accepts.
+// models) get DZ = 0, so that the array is a 3-vector that "Warp By Vector" accepts; the contact
+// multipliers of DEPL (LAGS_C...) are scalar arrays of their own (DEPL_LAGS_C).
 
 #include "solver/io/MeshFileError.hpp"
 #include "solver/io/ResultSelection.hpp"
@@ -152,15 +153,23 @@ private:
 
 // The components written for a field: the kept ones, and DZ = 0 after DX, DY when the field has
 // no DZ (a 2D displacement or force: a 3-vector for VTK).
+// Contact multipliers of DEPL (LAGS_C, LAGS_F1, LAGS_F2: FORMULATION='CONTINUE') are written
+// as scalar arrays of their own (DEPL_LAGS_C), not as components of the displacement vector.
 struct VtuComponents {
   std::vector<std::size_t> kept;
   bool addZ = false;
+  std::vector<std::size_t> multipliers;
 };
 
 VtuComponents vtuComponents(const Field& f, const ResultOutput& out) {
-  VtuComponents v{keptComponents(f, out), false};
+  VtuComponents v{{}, false, {}};
   std::vector<std::string> names;
-  for (const auto c : v.kept) {
+  for (const auto c : keptComponents(f, out)) {
+    if (f.components()[c].rfind("LAGS_", 0) == 0) {
+      v.multipliers.push_back(c);
+      continue;
+    }
+    v.kept.push_back(c);
     names.push_back(f.components()[c]);
   }
   v.addZ = names == std::vector<std::string>{"DX", "DY"};
@@ -229,7 +238,14 @@ std::string pointData(AppendedData& data, const Mesh& mesh, const ResultStep* st
   for (const auto& n : step != nullptr ? names : std::vector<std::string>{}) {
     const Field* f = step->field(n);
     if (f != nullptr && f->support() == FieldSupport::Node && !keptComponents(*f, output).empty()) {
-      xml += fieldArray(data, n, *f, vtuComponents(*f, output), static_cast<std::size_t>(mesh.nodeCount()));
+      const VtuComponents k = vtuComponents(*f, output);
+      const auto count = static_cast<std::size_t>(mesh.nodeCount());
+      if (!k.kept.empty()) {
+        xml += fieldArray(data, n, *f, k, count);
+      }
+      for (const auto c : k.multipliers) {
+        xml += fieldArray(data, n + "_" + f->components()[c], *f, VtuComponents{{c}, false, {}}, count);
+      }
     }
   }
   return xml + "      </PointData>\n";

@@ -402,7 +402,7 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
         ok && (constraint_ == nullptr || constraint_->acceptConvergence(start.displacement + du));
     if (ok && !accepted) {
       // The geometric loop paired again: at least one more correction with the new pairing.
-      log_ << "   |      | geometric update: contact pairing recomputed\n";
+      log_ << "   |      | " << constraint_->continuationNote() << "\n";
       lastIteration = iter + 1 + settings_.iterGlobMaxi;
     }
     if (accepted) {

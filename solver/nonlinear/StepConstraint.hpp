@@ -69,6 +69,9 @@ public:
   // interpenetration); may be empty.
   virtual std::string iterationNote() const = 0;
 
+  // The convergence-table line written when acceptConvergence() refused a converged state.
+  virtual std::string continuationNote() const { return "geometric update: contact pairing recomputed"; }
+
   // Lines written to the message file at the end of an accepted step (geometric iterations,
   // contact iterations, "Nombre de liaisons de contact : N", maximum interpenetration).
   virtual void reportStep(std::ostream& log) const = 0;

@@ -234,18 +234,6 @@ TEST(ContactStatNonLine, BodyHeldOnlyByContactWithPenaltyGetsTheNoticeAdvice) {
   EXPECT_NE(r.message.find("DIS_T"), std::string::npos);
 }
 
-TEST(ContactStatNonLine, ContinuousFormulationIsRefusedByName) {
-  Blocks b;
-  b.global = ", FORMULATION='CONTINUE'";
-  std::string comm = b.comm();
-  const std::string disc = "FORMULATION='DISCRETE', FORMULATION='CONTINUE'";
-  comm.replace(comm.find(disc), disc.size(), "FORMULATION='CONTINUE'");
-  const StudyRun r = runStudy("blocks_continue", b.mesh(2), comm);
-  EXPECT_EQ(r.diagnostic, JobDiagnostic::Error);
-  EXPECT_NE(r.message.find("CONTACT_20"), std::string::npos);
-  EXPECT_NE(r.message.find("FORMULATION='CONTINUE' is not implemented yet"), std::string::npos);
-}
-
 // A nearly rigid block B (E = 1e11) on a fixed base A, pressed by d = 0.01 then sheared by s(t)
 // with penalised contact and Coulomb friction: every one of the n = 5 slave nodes penetrates by
 // d and slips by s, so N = n E_N d = 500 and T = min(n E_T s, mu N) (sticking below

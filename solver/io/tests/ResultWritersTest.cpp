@@ -255,6 +255,46 @@ print("OK")
   EXPECT_EQ(runPython(dir, script, dir.string()), 0);
 }
 
+// DEPL with the contact multiplier LAGS_C of FORMULATION='CONTINUE' (defined on the slave nodes
+// only): the displacement stays a 3-vector (DX, DY, DZ = 0), LAGS_C goes to a scalar array
+// DEPL_LAGS_C, NaN off the slave nodes (it used to be the third component of the vector, which
+// Warp By Vector took for DZ).
+TEST(ResultWriters, VtuContactMultiplierIsNotPartOfTheDisplacementVector) {
+  const auto dir = testing::tempDir("vtu_lags_c");
+  const Mesh m = buildStructuredMesh({CellType::QUAD4, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}});
+  Result r;
+  ResultStep& s = r.addStep(1.0, 1);
+  const auto nodes = static_cast<std::size_t>(m.nodeCount());
+  auto depl = std::make_shared<Field>(Field::nodal("DEPL_R", {"DX", "DY", "LAGS_C"}, nodes));
+  depl->markPartial();
+  for (std::size_t n = 0; n < nodes; ++n) {
+    const auto x = m.point(static_cast<NodeId>(n));
+    depl->value(n, 0) = x[0];
+    depl->value(n, 1) = -x[1];
+    depl->setDefined(n, 0);
+    depl->setDefined(n, 1);
+    if (x[1] == 0.0) {
+      depl->value(n, 2) = -100.0 - x[0];
+      depl->setDefined(n, 2);
+    }
+  }
+  s.fields["DEPL"] = depl;
+  writeVtuResult(dir / "r.pvd", m, &r, {});
+  const char* script = R"(
+import sys, numpy as np, meshio
+m = meshio.read(sys.argv[1] + "/r_1.vtu")
+p = m.points
+d = m.point_data["DEPL"]
+assert d.shape == (len(p), 3), d.shape
+assert np.array_equal(d[:, 0], p[:, 0]) and np.array_equal(d[:, 1], -p[:, 1]) and not d[:, 2].any(), d
+c = m.point_data["DEPL_LAGS_C"].ravel()
+on = p[:, 1] == 0.0
+assert on.sum() == 3 and np.array_equal(c[on], -100.0 - p[on, 0]) and np.isnan(c[~on]).all(), c
+print("OK")
+)";
+  EXPECT_EQ(runPython(dir, script, dir.string()), 0);
+}
+
 TEST(ResultWriters, ResultTablesAndGmsh) {
   const auto dir = testing::tempDir("text_result");
   const Mesh m = buildStructuredMesh({CellType::QUAD4, {1, 1, 1}, {1, 1, 1}, {0, 0, 0}});

@@ -1,0 +1,484 @@
+// Continuous (LAGS_C) frictionless contact coupled with the Newton iterations of STAT_NON_LINE.
+
+#include "solver/contact/ContinuousContactConstraint.hpp"
+
+#include "solver/database/Result.hpp"
+#include "solver/fem/Quadrature.hpp"
+#include "solver/fem/ReferenceElement.hpp"
+#include "solver/mesh/MeshGeometry.hpp"
+#include "solver/nonlinear/SaddleSolver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+namespace stella::contact {
+
+namespace {
+
+// The slave cell types of INTEGRATION='AUTO': their shape functions have positive integrals
+// (those of the vertices of TRIA6 are zero, of QUAD8 negative).
+bool nodeIntegrable(CellType type) {
+  return type == CellType::SEG2 || type == CellType::SEG3 || type == CellType::TRIA3 ||
+         type == CellType::QUAD4 || type == CellType::QUAD9;
+}
+
+// |J| of a skin cell at the reference point xi (length or area scale).
+double jacobian(const fem::ReferenceElement& ref, const std::vector<Point3>& x, const Eigen::Vector3d& xi) {
+  const Eigen::MatrixXd d = ref.gradients(xi);
+  Point3 t1{0, 0, 0};
+  Point3 t2{0, 0, 0};
+  for (int k = 0; k < ref.nodeCount(); ++k) {
+    const auto& p = x[static_cast<std::size_t>(k)];
+    t1 = t1 + d(k, 0) * p;
+    if (ref.dimension() == 2) {
+      t2 = t2 + d(k, 1) * p;
+    }
+  }
+  return ref.dimension() == 2 ? norm(cross(t1, t2)) : norm(t1);
+}
+
+} // namespace
+
+ContinuousContactConstraint::ContinuousContactConstraint(std::shared_ptr<const ContactDefinition> definition,
+                                                         const DofMap& dofs, fem::Modelling modelling)
+    : ContactConstraint(std::move(definition), dofs), modelling_(modelling) {}
+
+std::string ContinuousContactConstraint::resolutionEffects() const {
+  std::vector<std::string> zones;
+  for (const auto& z : definition_->zones) {
+    if (z.resolve) {
+      zones.push_back(z.algorithm == ContactAlgorithm::ContinuePenalty
+                          ? fmt::format("PENALISATION COEF_PENA_CONT={}", z.continuous.penalty)
+                          : fmt::format("STANDARD COEF_CONT={}", z.continuous.augmentation));
+    }
+  }
+  const auto& c = definition_->settings.continuous;
+  return fmt::format("{} (LAGS_C on the slave nodes, INTEGRATION='AUTO'), ALGO_RESO_CONT={}",
+                     fmt::join(zones, "; "), c.statusLoop == StatusLoop::Newton ? "NEWTON" : "POINT_FIXE");
+}
+
+void ContinuousContactConstraint::computeWeights() {
+  const Mesh& mesh = *definition_->mesh;
+  // On the initial configuration: the contact forces of small strains (DEFORMATION='PETIT', the
+  // only one of stella) balance stresses measured on it, so the patch test holds exactly.
+  const NodePosition position = meshPositions(mesh, nullptr);
+  std::vector<double> nodeWeight(static_cast<std::size_t>(mesh.nodeCount()), 0.0);
+  for (const auto& zone : definition_->zones) {
+    const auto* cells = mesh.cellGroup(zone.slaveGroup);
+    if (cells == nullptr || !zone.resolve) {
+      continue;
+    }
+    for (CellId c : *cells) {
+      const CellType type = mesh.cellType(c);
+      if (!nodeIntegrable(type)) {
+        throw UserError(
+            Diagnostic::fatal(
+                "CONTACT_20",
+                fmt::format("STAT_NON_LINE CONTACT: INTEGRATION='AUTO' on {} slave cells (cell {} of "
+                            "'{}') with FORMULATION='CONTINUE' is not implemented yet",
+                            name(type), mesh.cellName(c), zone.slaveGroup),
+                zone.location)
+                .withNote(
+                    "the shape functions of the vertices of TRIA6 and QUAD8 cells have zero or negative "
+                    "integrals; mesh the slave surface with TRIA3, QUAD4 or QUAD9 (SEG2 or SEG3 in 2D)"));
+      }
+      const fem::ReferenceElement& ref = fem::referenceElement(type);
+      const fem::QuadratureRule& rule = fem::rigiRule(type, fem::IntegrationRole::Skin);
+      const auto nodes = mesh.cellNodes(c);
+      std::vector<Point3> x;
+      for (NodeId n : nodes) {
+        x.push_back(position(n));
+      }
+      // w_i = integral of N_i (x r in AXIS) over the cell, with the skin rule of the pressures:
+      // the consistent nodal forces of a uniform pressure, so that the patch test holds.
+      for (int g = 0; g < rule.size(); ++g) {
+        const Eigen::Vector3d& xi = rule.points[static_cast<std::size_t>(g)];
+        const Eigen::VectorXd n = ref.values(xi);
+        double scale = rule.weights[static_cast<std::size_t>(g)] * jacobian(ref, x, xi);
+        if (modelling_ == fem::Modelling::Axisymmetric) {
+          double r = 0.0;
+          for (std::size_t k = 0; k < nodes.size(); ++k) {
+            r += n(static_cast<Eigen::Index>(k)) * x[k][0];
+          }
+          scale *= r; // per radian, like the volume integrals
+        }
+        for (std::size_t k = 0; k < nodes.size(); ++k) {
+          nodeWeight[static_cast<std::size_t>(nodes[k])] += n(static_cast<Eigen::Index>(k)) * scale;
+        }
+      }
+    }
+  }
+  weightLink_.assign(links_.size(), 0.0);
+  for (std::size_t k = 0; k < links_.size(); ++k) {
+    weightLink_[k] = nodeWeight[static_cast<std::size_t>(links_[k].slave)];
+  }
+}
+
+void ContinuousContactConstraint::paired() {
+  lagsC_.resize(links_.size(), 0.0);
+  lagsCStart_.resize(links_.size(), 0.0);
+  contactLink_.resize(links_.size(), 0);
+  status_.resize(links_.size(), 0);
+  if (weightLink_.size() != links_.size()) {
+    computeWeights(); // once: on the initial configuration, and links are the slave nodes
+  }
+  std::vector<char> hasRow(links_.size(), 0);
+  for (int k : rows_.link) {
+    hasRow[static_cast<std::size_t>(k)] = 1;
+  }
+  for (std::size_t k = 0; k < links_.size(); ++k) {
+    if (hasRow[k] == 0) {
+      lagsC_[k] = 0.0; // not paired (or not resolved): no contact pressure
+    }
+  }
+  const auto m = static_cast<Eigen::Index>(rows_.link.size());
+  weight_.resize(m);
+  coefficient_.resize(m);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(i)]);
+    const ContactZone& z = definition_->zones[static_cast<std::size_t>(links_[k].zone)];
+    weight_(i) = weightLink_[k];
+    coefficient_(i) =
+        z.algorithm == ContactAlgorithm::ContinuePenalty ? z.continuous.penalty : z.continuous.augmentation;
+  }
+}
+
+bool ContinuousContactConstraint::cycleTreatment(int zone) const {
+  const std::string& a = definition_->zones[static_cast<std::size_t>(zone)].continuous.adaptation;
+  return a == "CYCLAGE" || a == "TOUT";
+}
+
+bool ContinuousContactConstraint::penalised(Eigen::Index row) const {
+  const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(row)]);
+  return definition_->zones[static_cast<std::size_t>(links_[k].zone)].algorithm ==
+         ContactAlgorithm::ContinuePenalty;
+}
+
+std::vector<char> ContinuousContactConstraint::statusAt(const Eigen::VectorXd& u) const {
+  std::vector<char> s(links_.size(), 0);
+  const Eigen::VectorXd g = gapsAt(u);
+  for (Eigen::Index i = 0; i < g.size(); ++i) {
+    const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(i)]);
+    if (k < frozen_.size() && frozen_[k] >= 0) {
+      s[k] = static_cast<char>(frozen_[k]); // a cycling node (ADAPTATION='CYCLAGE')
+      continue;
+    }
+    // a node of zero weight (on the axis of an AXIS model) carries no contact force
+    const double indicator = penalised(i) ? g(i) : lagsC_[k] + coefficient_(i) * g(i);
+    s[k] = indicator < 0.0 && weight_(i) > 0.0 ? 1 : 0;
+  }
+  return s;
+}
+
+const std::vector<char>& ContinuousContactConstraint::currentStatus(const Eigen::VectorXd& u) {
+  if (definition_->settings.continuous.statusLoop == StatusLoop::Newton && !useInitial_) {
+    status_ = statusAt(u);
+  }
+  return status_;
+}
+
+void ContinuousContactConstraint::beginStep(const Eigen::VectorXd& u, double time) {
+  lagsC_ = lagsCStart_; // a step cut restarts from the multipliers of its start
+  ContactConstraint::beginStep(u, time);
+  statusIterations_ = 0;
+  changes_.assign(links_.size(), 0);
+  frozen_.assign(links_.size(), -1);
+  continuation_.clear();
+  useInitial_ = true;
+  lastStatus_.clear();
+  const Eigen::VectorXd g = gapsAt(u);
+  status_.assign(links_.size(), 0);
+  for (Eigen::Index i = 0; i < g.size(); ++i) {
+    const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(i)]);
+    if (!firstStep_) {
+      status_[k] = contactLink_[k];
+      continue;
+    }
+    const ContinuousZone& c = definition_->zones[static_cast<std::size_t>(links_[k].zone)].continuous;
+    if (weight_(i) <= 0.0) {
+      continue;
+    }
+    switch (c.init) {
+    case ContactInit::Yes:
+      status_[k] = 1;
+      break;
+    case ContactInit::Interpenetrated:
+      status_[k] = g(i) < 0.0 && (c.initDistance < 0.0 || -g(i) <= c.initDistance) ? 1 : 0;
+      break;
+    case ContactInit::No:
+      status_[k] = 0;
+      break;
+    }
+  }
+}
+
+void ContinuousContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::VectorXd& forces,
+                                            std::vector<Eigen::Triplet<double>>* tangent) {
+  const Eigen::Index m = rows_.problem.A.rows();
+  if (m == 0) {
+    return;
+  }
+  const std::vector<char>& status = currentStatus(u);
+  const Eigen::VectorXd g = gapsAt(u);
+  const SparseRows& a = rows_.problem.A;
+  int active = 0;
+  double penetration = 0.0;
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(i)]);
+    const bool on = status[k] != 0;
+    const double rho = coefficient_(i);
+    const double w = weight_(i);
+    if (on) {
+      ++active;
+      penetration = std::max(penetration, -g(i));
+      // -w (lambda + rho g) grad g (PENALISATION: lambda = rho g, eliminated)
+      const double pressure = penalised(i) ? rho * g(i) : lagsC_[k] + rho * g(i);
+      for (SparseRows::InnerIterator it(a, i); it; ++it) {
+        forces(it.col()) -= w * pressure * it.value();
+      }
+    }
+    if (tangent != nullptr) {
+      const double c = on ? rho * w : 0.0; // zeros keep the pattern of the pairing
+      for (SparseRows::InnerIterator p(a, i); p; ++p) {
+        for (SparseRows::InnerIterator q(a, i); q; ++q) {
+          tangent->emplace_back(static_cast<int>(p.col()), static_cast<int>(q.col()),
+                                c * p.value() * q.value());
+        }
+      }
+    }
+  }
+  noteActive_ = active;
+  notePenetration_ = penetration;
+}
+
+void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::VectorXd& ddu,
+                                          Eigen::VectorXd& dlambda, SaddleSolver& solver) {
+  const Eigen::Index m = rows_.problem.A.rows();
+  const std::vector<char> status = currentStatus(u);
+  useInitial_ = false;
+  if (m == 0) {
+    return;
+  }
+  lastStatus_ = status;
+  // Rows in contact with an augmented Lagrangian: their multipliers solve the Schur complement.
+  std::vector<Eigen::Index> contact;
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(i)]);
+    if (penalised(i)) {
+      continue;
+    }
+    if (status[k] != 0) {
+      contact.push_back(i);
+    } else {
+      lagsC_[k] = 0.0; // -(w / rho) lambda = 0
+    }
+  }
+  addContactIterations(1);
+  if (contact.empty()) {
+    return;
+  }
+  const SparseRows& a = rows_.problem.A;
+  const auto mc = static_cast<Eigen::Index>(contact.size());
+  const Eigen::Index n = ddu.size();
+  // S = A_c K^-1 A_c^T by blocks of columns (one backend call each): n x block doubles at a time.
+  constexpr Eigen::Index block = 64;
+  Eigen::MatrixXd s = Eigen::MatrixXd::Zero(mc, mc);
+  for (Eigen::Index first = 0; first < mc; first += block) {
+    const Eigen::Index cols = std::min(block, mc - first);
+    Eigen::MatrixXd x = Eigen::MatrixXd::Zero(n, cols);
+    for (Eigen::Index j = 0; j < cols; ++j) {
+      for (SparseRows::InnerIterator it(a, contact[static_cast<std::size_t>(first + j)]); it; ++it) {
+        x(it.col(), j) = it.value();
+      }
+    }
+    solver.solveHomogeneous(x); // K^-1 A_c^T
+    for (Eigen::Index i = 0; i < mc; ++i) {
+      for (SparseRows::InnerIterator it(a, contact[static_cast<std::size_t>(i)]); it; ++it) {
+        s.row(i).segment(first, cols) += it.value() * x.row(it.col());
+      }
+    }
+  }
+  const Eigen::VectorXd g = gapsAt(u);
+  Eigen::VectorXd rhs(mc);
+  for (Eigen::Index i = 0; i < mc; ++i) {
+    const Eigen::Index row = contact[static_cast<std::size_t>(i)];
+    double adu = 0.0;
+    for (SparseRows::InnerIterator it(a, row); it; ++it) {
+      adu += it.value() * ddu(it.col());
+    }
+    rhs(i) = g(row) + adu;
+  }
+  const Eigen::LDLT<Eigen::MatrixXd> ldlt(0.5 * (s + s.transpose()));
+  const Eigen::VectorXd d = ldlt.vectorD();
+  const double scale = d.cwiseAbs().maxCoeff();
+  for (Eigen::Index p = 0; p < mc; ++p) {
+    if (!(std::fabs(d(p)) > 1e-12 * scale)) {
+      const Eigen::PermutationMatrix<Eigen::Dynamic> perm(ldlt.transpositionsP());
+      const Eigen::PermutationMatrix<Eigen::Dynamic> inverse(perm.inverse());
+      const Eigen::Index row = contact[static_cast<std::size_t>(inverse.indices()(p))];
+      const auto& l = links_[static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(row)])];
+      throw UserError(
+          Diagnostic::fatal(
+              "CONTACT_11",
+              fmt::format("the contact conditions are redundant at INST {}: the gap of slave node "
+                          "{} (zone {}) cannot move independently of the other nodes in contact",
+                          time_, definition_->mesh->nodeName(l.slave), l.zone + 1),
+              definition_->zones[static_cast<std::size_t>(l.zone)].location)
+              .withNote(
+                  "a slave node also held by DDL_IMPO or a symmetry condition in the normal direction, or "
+                  "two zones constraining the same node, make the conditions redundant (notice §4.7): "
+                  "exclude it with SANS_GROUP_NO"));
+    }
+  }
+  const Eigen::VectorXd y = ldlt.solve(rhs); // w dlambda
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
+  for (Eigen::Index j = 0; j < mc; ++j) {
+    const Eigen::Index row = contact[static_cast<std::size_t>(j)];
+    for (SparseRows::InnerIterator it(a, row); it; ++it) {
+      f(it.col()) += it.value() * y(j);
+    }
+    const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(row)]);
+    lagsC_[k] += y(j) / weight_(row);
+  }
+  Eigen::VectorXd dx;
+  Eigen::VectorXd dy;
+  solver.solve(f, Eigen::VectorXd::Zero(dlambda.size()), Eigen::VectorXd::Zero(n), dx, dy);
+  ddu -= dx;
+  if (dy.size() == dlambda.size()) {
+    dlambda -= dy;
+  }
+}
+
+bool ContinuousContactConstraint::acceptResolution(const Eigen::VectorXd& u) {
+  continuation_.clear();
+  const auto& c = definition_->settings.continuous;
+  const std::vector<char> now = statusAt(u);
+  const bool newton = c.statusLoop == StatusLoop::Newton;
+  const std::vector<char>& used = newton ? lastStatus_ : status_;
+  if (rows_.link.empty() || now == used || (newton && lastStatus_.empty() && now == status_)) {
+    return true;
+  }
+  int changed = 0;
+  int frozen = 0;
+  for (std::size_t k = 0; k < now.size(); ++k) {
+    if (k >= used.size() || now[k] == used[k]) {
+      continue;
+    }
+    ++changed;
+    // ADAPTATION='CYCLAGE': a node that went in and out of contact twice in the step (flip-flop)
+    // keeps the status its multiplier asks for (in contact while compressed) for the rest of it.
+    if (++changes_[k] >= 4 && cycleTreatment(links_[k].zone)) {
+      frozen_[k] = lagsC_[k] < 0.0 ? 1 : 0;
+      ++frozen;
+    }
+  }
+  if (frozen > 0) {
+    noteAlarm(fmt::format("CONTACT_27: {} slave node(s) cycled in and out of contact at INST {} (flip-flop): "
+                          "their status is frozen for the rest of the step (ADAPTATION='CYCLAGE'); check the "
+                          "contact pressure there",
+                          frozen, time_));
+  }
+  status_ = statusAt(u); // with the frozen nodes
+  ++statusIterations_;
+  const int cap = newton                ? 2 * static_cast<int>(rows_.link.size()) + 10
+                  : c.iterationsPerNode ? c.statusIterationFactor * static_cast<int>(rows_.link.size())
+                                        : c.maxStatusIterations;
+  if (statusIterations_ > cap) {
+    throw UserError(
+        Diagnostic::noConvergence("CONTACT_26",
+                                  fmt::format("the contact status loop did not converge at INST {}: after {} "
+                                              "status iterations {} slave node(s) still change status",
+                                              time_, cap, changed),
+                                  definition_->location)
+            .withNote(newton
+                          ? "try ALGO_RESO_CONT='POINT_FIXE', or refine the list of instants"
+                          : "raise ITER_CONT_MAXI (or ITER_CONT_MULT with ITER_CONT_TYPE='MULT'), or refine "
+                            "the list of instants"));
+  }
+  lastStatus_ = status_;
+  continuation_ = fmt::format("contact status changed on {} slave node(s): Newton iterations go on", changed);
+  return false;
+}
+
+std::string ContinuousContactConstraint::iterationNote() const {
+  int changes = 0;
+  for (std::size_t k = 0; k < status_.size() && k < lastStatus_.size(); ++k) {
+    changes += status_[k] != lastStatus_[k] ? 1 : 0;
+  }
+  return fmt::format("CONT {} act. {} chg pene {:.2e}", noteActive_, changes, notePenetration_);
+}
+
+std::string ContinuousContactConstraint::continuationNote() const {
+  return continuation_.empty() ? ContactConstraint::continuationNote() : continuation_;
+}
+
+std::vector<LinkState> ContinuousContactConstraint::resolvedStates(const Eigen::VectorXd& u) const {
+  const Eigen::VectorXd g = gapsAt(u);
+  const std::vector<char> status = statusAt(u);
+  std::vector<LinkState> states(rows_.link.size());
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    const auto row = static_cast<Eigen::Index>(i);
+    const auto k = static_cast<std::size_t>(rows_.link[i]);
+    const double lambda = status[k] == 0 ? 0.0 : penalised(row) ? coefficient_(row) * g(row) : lagsC_[k];
+    states[i].gap = g(row);
+    states[i].normalForce = -weight_(row) * lambda;
+    states[i].status = status[k] != 0 ? LinkStatus::Sliding : LinkStatus::Open;
+  }
+  return states;
+}
+
+void ContinuousContactConstraint::accepted(const std::vector<LinkState>& rowStates) {
+  for (std::size_t i = 0; i < rowStates.size(); ++i) {
+    const auto k = static_cast<std::size_t>(rows_.link[i]);
+    const double w = weight_(static_cast<Eigen::Index>(i));
+    lagsC_[k] = w > 0.0 ? -rowStates[i].normalForce / w : 0.0;
+    contactLink_[k] = rowStates[i].status != LinkStatus::Open ? 1 : 0;
+  }
+  lagsCStart_ = lagsC_;
+  firstStep_ = false;
+}
+
+void ContinuousContactConstraint::store(ResultStep& step) const {
+  ContactConstraint::store(step);
+  auto found = step.fields.find("DEPL");
+  if (found == step.fields.end() || found->second == nullptr) {
+    return;
+  }
+  const Field& depl = *found->second;
+  if (depl.componentIndex("LAGS_C")) {
+    return;
+  }
+  std::vector<std::string> components = depl.components();
+  components.push_back("LAGS_C");
+  const std::size_t nodes = depl.entityCount();
+  const std::size_t c0 = depl.componentCount();
+  auto out = std::make_shared<Field>(Field::nodal(depl.quantity(), components, nodes));
+  out->markPartial();
+  for (std::size_t n = 0; n < nodes; ++n) {
+    for (std::size_t c = 0; c < c0; ++c) {
+      out->value(n, c) = depl.value(n, c);
+      if (depl.defined(n, c)) {
+        out->setDefined(n, c);
+      }
+    }
+  }
+  for (std::size_t k = 0; k < links_.size(); ++k) {
+    if (!resolvedZone_[static_cast<std::size_t>(links_[k].zone)]) {
+      continue;
+    }
+    const auto n = static_cast<std::size_t>(links_[k].slave);
+    out->value(n, c0) = k < lagsC_.size() ? lagsC_[k] : 0.0;
+    out->setDefined(n, c0);
+  }
+  step.fields["DEPL"] = out;
+}
+
+std::string ContinuousContactConstraint::singularNote() const {
+  return "with FORMULATION='CONTINUE' a body held only by contact is held once its contact nodes are in "
+         "contact (the augmented term COEF_CONT x w x grad g grad g of the nodes in contact stiffens it): "
+         "CONTACT_INIT='OUI' puts every slave node in contact at the first iteration; otherwise impose "
+         "DDL_IMPO on one of its points or hold it with springs of small stiffness (notice §4.4.2)";
+}
+
+} // namespace stella::contact
