@@ -1,0 +1,118 @@
+#!/usr/bin/env python3
+"""Checks across runs of the stability cases (ctest stability.continuity, stability.units,
+stability.messages; issue 19):
+
+continuity  for 5 cases, one input is perturbed by 1e-6 relative (an imposed displacement, the
+            friction coefficient, a Poisson ratio); every computed value of the case's TEST_RESU
+            (the VALE_CALC column of its message file) must move by O(1e-6): the ratio
+            |dr / r| / 1e-6 is printed and asserted <= 10 (a different active set would give a
+            jump of O(1)), and at least one value must respond (ratio >= 0.1: a perturbation
+            that changes nothing would test nothing).
+units       the N/m, N/mm and kN/mm studies give the same dimensionless results (DY / L,
+            forces / (stress unit x L)) to 1e-8.
+messages    the body held only by contact without springs stops with SOLVE_1 naming the free
+            degree of freedom and the springs of notice 4.4.2, not with a crash.
+
+usage: continuity.py STELLA WORKDIR {continuity|units|messages}"""
+
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+# case, text to perturb in its command file, expected |dr/r| / 1e-6 bound is 10 for all
+PERTURBED = [
+    ("gen_penalty_1e12", "DY=-2e-05", "DY=%r" % (-2e-05 * (1 + 1e-6))),
+    ("gen_friction_mu03", "COULOMB=0.3", "COULOMB=%r" % (0.3 * (1 + 1e-6))),
+    ("gen_slide_off_edge", "DY=-0.01", "DY=%r" % (-0.01 * (1 + 1e-6))),
+    ("gen_flip_flop", "DY=2e-05", "DY=%r" % (2e-05 * (1 + 1e-6))),
+    ("gen_incompressible_si", "NU=0.4999", "NU=%r" % (0.4999 * (1 + 1e-6))),
+]
+
+VALUE_LINE = re.compile(r"^\s*(?:OK|NOOK)\s+ANALYTIQUE\s+(\S+)\s+(\S+)")
+
+
+def run(stella, workdir, name, comm_text=None, tag=""):
+    """Runs testcases/stability/<name>.export (or its command file replaced by comm_text); returns
+    the computed values of its TEST_RESU, in order, and the message file's text."""
+    out = os.path.join(workdir, name + tag)
+    shutil.rmtree(out, ignore_errors=True)
+    os.makedirs(out)
+    export = os.path.join(HERE, name + ".export")
+    if comm_text is not None:
+        for line in open(export):
+            if line.startswith("F msh"):
+                mesh = line.split()[2]
+        shutil.copy(os.path.join(HERE, mesh), out)
+        with open(os.path.join(out, name + ".comm"), "w") as f:
+            f.write(comm_text)
+        with open(os.path.join(out, name + ".export"), "w") as f:
+            f.write(open(export).read())
+        export = os.path.join(out, name + ".export")
+    subprocess.run([stella, "run", export, "--quiet", "--work-dir", os.path.join(out, "work"), "--output-dir", out],
+                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
+    mess = open(os.path.join(out, name + ".mess")).read()
+    values = [float(m.group(2)) for m in map(VALUE_LINE.match, mess.splitlines()) if m]
+    return values, mess
+
+
+def continuity(stella, workdir):
+    failures = 0
+    for name, old, new in PERTURBED:
+        text = open(os.path.join(HERE, name + ".comm")).read()
+        if text.count(old) != 1:
+            print("%s: '%s' is not found once in the command file" % (name, old))
+            failures += 1
+            continue
+        base, _ = run(stella, workdir, name)
+        moved, _ = run(stella, workdir, name, text.replace(old, new), ".perturbed")
+        if not base or len(base) != len(moved):
+            print("%s: %d values, %d perturbed" % (name, len(base), len(moved)))
+            failures += 1
+            continue
+        scale = max(abs(v) for v in base)
+        ratios = [abs(b - m) / max(abs(b), 1e-9 * scale) / 1e-6 for b, m in zip(base, moved)]
+        worst = max(ratios)
+        ok = worst <= 10.0 and worst >= 0.1
+        print("%s: %s -> %s: max |dr/r| / 1e-6 = %.3f over %d values %s" % (name, old, new, worst, len(base),
+                                                                             "OK" if ok else "FAILED"))
+        failures += 0 if ok else 1
+    return failures
+
+
+def units(stella, workdir):
+    # (case, length unit in m, stress unit in Pa)
+    systems = [("gen_units_n_m", 1.0, 1.0), ("gen_units_n_mm", 1e-3, 1e6), ("gen_units_kn_mm", 1e-3, 1e9)]
+    results = []
+    for name, length, stress in systems:
+        values, mess = run(stella, workdir, name)
+        # the tests are DY (MIN, MAX) of UP_BOT and LOW_TOP, then the contact resultant
+        dimensionless = [v * length / 1.0 for v in values[:-1]] + [values[-1] * stress * length]
+        results.append((name, dimensionless))
+    failures = 0
+    ref = results[0][1]
+    for name, dims in results[1:]:
+        worst = max(abs(a - b) / abs(a) for a, b in zip(ref, dims))
+        ok = len(dims) == len(ref) == 5 and worst <= 1e-8
+        print("%s vs gen_units_n_m: largest relative difference of the dimensionless results %.2e %s" % (
+            name, worst, "OK" if ok else "FAILED"))
+        failures += 0 if ok else 1
+    return failures
+
+
+def messages(stella, workdir):
+    _, mess = run(stella, workdir, "gen_no_springs")
+    wanted = ["<F> <SOLVE_1>", "component DY is free", "springs", "4.4.2", "DIAGNOSTIC JOB : OK"]
+    missing = [w for w in wanted if w not in mess]
+    print("gen_no_springs: message %s" % ("OK" if not missing else "lacks %s" % missing))
+    return len(missing)
+
+
+if __name__ == "__main__":
+    stella, workdir, what = sys.argv[1:4]
+    os.makedirs(workdir, exist_ok=True)
+    failed = {"continuity": continuity, "units": units, "messages": messages}[what](stella, workdir)
+    sys.exit(1 if failed else 0)
