@@ -70,6 +70,34 @@ std::string ContactConstraint::effects() const {
                      definition_->hasFriction() ? "Coulomb friction" : "no friction", loop);
 }
 
+std::vector<std::string> ContactConstraint::zoneEffects() const {
+  std::vector<std::string> lines;
+  for (std::size_t k = 0; k < definition_->zones.size(); ++k) {
+    const ContactZone& z = definition_->zones[k];
+    std::string algorithm = fmt::format("ALGO_CONT='{}'", algorithmName(z.algorithm));
+    if (z.algorithm == ContactAlgorithm::Penalty) {
+      algorithm += fmt::format(" E_N={:g}", z.normalPenalty);
+    }
+    std::string friction = "no friction (FROTTEMENT='SANS')";
+    if (definition_->hasFriction()) {
+      friction =
+          fmt::format("Coulomb friction COULOMB={:g}{}", z.coulomb,
+                      z.algorithm == ContactAlgorithm::Penalty ? fmt::format(" E_T={:g}", z.tangentPenalty)
+                                                               : std::string());
+    }
+    lines.push_back(fmt::format(
+        "zone {}: GROUP_MA_ESCL='{}' on GROUP_MA_MAIT='{}', {}, {}, {} slave node(s){}", k + 1, z.slaveGroup,
+        z.masterGroup, z.resolve ? algorithm : std::string("RESOLUTION='NON' (gap measured, no force)"),
+        friction, zoneSlaveNodes(*definition_->mesh, z).size(),
+        z.pairing == Pairing::Nodal ? ", APPARIEMENT='NODAL'" : ", APPARIEMENT='MAIT_ESCL'"));
+  }
+  return lines;
+}
+
+std::string ContactConstraint::workSummary() const {
+  return fmt::format("{} pairing(s)", pairings_);
+}
+
 void ContactConstraint::pairAt(const Eigen::VectorXd& u) {
   const Mesh& mesh = *definition_->mesh;
   const std::vector<double> disp = nodalDisplacement(dofs_, mesh.nodeCount(), u);

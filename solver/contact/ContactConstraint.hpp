@@ -29,6 +29,8 @@ public:
   void initialize();
 
   std::string effects() const override;
+  std::vector<std::string> zoneEffects() const override;
+  std::string workSummary() const override;
   void beginStep(const Eigen::VectorXd& u, double time) override;
   bool acceptConvergence(const Eigen::VectorXd& u) override;
   std::string iterationNote() const override;

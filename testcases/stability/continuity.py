@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Checks across runs of the stability cases (ctest stability.continuity, stability.units,
-stability.messages; issue 19):
+stability.effects, stability.messages; issue 19):
 
 continuity  for 5 cases, one input is perturbed by 1e-6 relative (an imposed displacement, the
             friction coefficient, a Poisson ratio); every computed value of the case's TEST_RESU
@@ -10,10 +10,14 @@ continuity  for 5 cases, one input is perturbed by 1e-6 relative (an imposed dis
             that changes nothing would test nothing).
 units       the N/m, N/mm and kN/mm studies give the same dimensionless results (DY / L,
             forces / (stress unit x L)) to 1e-8.
+effects     the effects report of STAT_NON_LINE (behaviours, contact zones, friction, pairing,
+            factorisation, fields, time per effect) and nothing computed that was not asked (no
+            contact line without CONTACT, no friction without COULOMB, no return mapping for ELAS,
+            one pairing with REAC_GEOM='SANS', symmetric factorisations).
 messages    the body held only by contact without springs stops with SOLVE_1 naming the free
             degree of freedom and the springs of notice 4.4.2, not with a crash.
 
-usage: continuity.py STELLA WORKDIR {continuity|units|messages}"""
+usage: continuity.py STELLA WORKDIR {continuity|units|effects|messages}"""
 
 import os
 import re
@@ -103,6 +107,52 @@ def units(stella, workdir):
     return failures
 
 
+def effects(stella, workdir):
+    """The effects report of STAT_NON_LINE, and that nothing is computed that was not asked."""
+    def variant(name, old, new):
+        text = open(os.path.join(HERE, name + ".comm")).read()
+        assert text.count(old) == 1, (name, old)
+        return text.replace(old, new)
+
+    checks = [
+        # (what, case, command file text or None, lines wanted, lines refused)
+        ("frictionless Lagrange contact", "gen_ratio_1e6_contrainte", None,
+         ["effects activated [why]:", "linear elasticity, no return mapping",
+          "zone 1: GROUP_MA_ESCL='UP_BOT' on GROUP_MA_MAIT='LOW_TOP', ALGO_CONT='CONTRAINTE'",
+          "no friction (FROTTEMENT='SANS')", "factorisation symmetric", "time per effect (s):", "0 unsymmetric)",
+          "fields stored at each archived step: DEPL, SIEF_ELGA, VARI_ELGA, CONT_NOEU"],
+         ["Coulomb friction", "return mapping at each"]),
+        ("no CONTACT: no contact structure", "gen_ratio_1e6_contrainte",
+         variant("gen_ratio_1e6_contrainte", "CONTACT=CONT, ", ""),
+         ["no contact: no pairing, no contact structure, no friction [CONTACT absent]", "0 unsymmetric)"],
+         ["pairing(s)", ", contact ", "CONT_NOEU ["]),
+        ("REAC_GEOM='SANS': paired once", "gen_incompressible_si",
+         variant("gen_incompressible_si", "FORMULATION='DISCRETE', ", "FORMULATION='DISCRETE', REAC_GEOM='SANS', "),
+         ["no geometric update (REAC_GEOM='SANS': paired once)", "(1 pairing(s))"], []),
+        ("Coulomb friction, COEF_MATR_FROT = 0: symmetric", "gen_friction_mu03", None,
+         ["Coulomb friction COULOMB=0.3 E_T=10000", "0 unsymmetric)"], []),
+        ("Coulomb slip with COEF_MATR_FROT = 1: unsymmetric while sliding", "gen_friction_mu03",
+         variant("gen_friction_mu03", "COULOMB=0.3", "COULOMB=0.3, COEF_MATR_FROT=1.0"),
+         ["COEF_MATR_FROT=1", "time per effect (s):"], ["0 unsymmetric)"]),
+        ("VMIS_ISOT_LINE: return mapping", "gen_ratio_1e6_contrainte",
+         variant("gen_ratio_1e6_contrainte", "INCREMENT=_F(LIST_INST=L_INST)",
+                 "INCREMENT=_F(LIST_INST=L_INST), COMPORTEMENT=_F(GROUP_MA='UP', RELATION='VMIS_ISOT_LINE')").replace(
+             "M_UP = DEFI_MATERIAU(ELAS=_F(E=210000.0, NU=0.0))",
+             "M_UP = DEFI_MATERIAU(ELAS=_F(E=210000.0, NU=0.0), ECRO_LINE=_F(D_SIGM_EPSI=1000.0, SY=1.0e6))"),
+         ["behaviour VMIS_ISOT_LINE on GROUP_MA=(UP) (8 cell(s)): return mapping at each Gauss point",
+          "behaviour ELAS on the 8 other volume cell(s)", "behaviours (ELAS, VMIS_ISOT_LINE) with assembly"], []),
+    ]
+    failures = 0
+    for what, name, text, wanted, refused in checks:
+        _, mess = run(stella, workdir, name, text, ".effects" if text else "")
+        missing = [w for w in wanted if w not in mess]
+        present = [r for r in refused if r in mess]
+        ok = not missing and not present
+        print("%s (%s): %s" % (what, name, "OK" if ok else "missing %s, present %s" % (missing, present)))
+        failures += 0 if ok else 1
+    return failures
+
+
 def messages(stella, workdir):
     _, mess = run(stella, workdir, "gen_no_springs")
     wanted = ["<F> <SOLVE_1>", "component DY is free", "springs", "4.4.2", "DIAGNOSTIC JOB : OK"]
@@ -114,5 +164,5 @@ def messages(stella, workdir):
 if __name__ == "__main__":
     stella, workdir, what = sys.argv[1:4]
     os.makedirs(workdir, exist_ok=True)
-    failed = {"continuity": continuity, "units": units, "messages": messages}[what](stella, workdir)
+    failed = {"continuity": continuity, "units": units, "messages": messages, "effects": effects}[what](stella, workdir)
     sys.exit(1 if failed else 0)
