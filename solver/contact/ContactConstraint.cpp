@@ -35,6 +35,7 @@ ContactConstraint::ContactConstraint(std::shared_ptr<const ContactDefinition> de
   for (const auto& z : definition_->zones) {
     resolvedZone_.push_back(z.resolve);
     anyResolved_ = anyResolved_ || z.resolve;
+    resolvedSlaveNodes_ += z.resolve ? zoneSlaveNodes(*definition_->mesh, z).size() : 0;
   }
   contactEquations_ = contactEquations(*definition_, dofs_);
   uPairing_ = Eigen::VectorXd::Zero(dofs_.physicalCount());
@@ -140,6 +141,19 @@ double ContactConstraint::geometricResidual(const Eigen::VectorXd& u) const {
   return change > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;
 }
 
+bool ContactConstraint::farApart(const Eigen::VectorXd& u) const {
+  if (rows_.link.empty() || rows_.link.size() != resolvedSlaveNodes_) {
+    return false; // a slave node without a link might find one when paired again
+  }
+  double change = 0.0;
+  for (int e : contactEquations_) {
+    change = std::max(change, std::abs(u(e) - uPairing_(e)));
+  }
+  // A point moved by at most sqrt(3) x the largest component; its gap after a new pairing
+  // differs from the linearised one by about that much: a margin of 4.
+  return gapsAt(u).minCoeff() > 4.0 * change;
+}
+
 bool ContactConstraint::acceptConvergence(const Eigen::VectorXd& u) {
   if (!acceptResolution(u)) {
     return false;
@@ -148,7 +162,7 @@ bool ContactConstraint::acceptConvergence(const Eigen::VectorXd& u) {
   if (anyResolved_) {
     const double r = geometricResidual(u);
     lastGeometricResidual_ = r;
-    if (s.geometricUpdate == GeometricUpdate::Automatic && r > s.geometricResidual) {
+    if (s.geometricUpdate == GeometricUpdate::Automatic && r > s.geometricResidual && !farApart(u)) {
       if (geometricIterations_ >= s.maxGeometricIterations) {
         throw UserError(
             Diagnostic::noConvergence(

@@ -142,7 +142,7 @@ def effects(stella, workdir):
          ["behaviour VMIS_ISOT_LINE on GROUP_MA=(UP) (8 cell(s)): return mapping at each Gauss point",
           "behaviour ELAS on the 8 other volume cell(s)", "behaviours (ELAS, VMIS_ISOT_LINE) with assembly"], []),
     ]
-    failures = 0
+    failures = far_zone(stella, workdir)
     for what, name, text, wanted, refused in checks:
         _, mess = run(stella, workdir, name, text, ".effects" if text else "")
         missing = [w for w in wanted if w not in mess]
@@ -151,6 +151,55 @@ def effects(stella, workdir):
         print("%s (%s): %s" % (what, name, "OK" if ok else "missing %s, present %s" % (missing, present)))
         failures += 0 if ok else 1
     return failures
+
+
+FAR_STUDY = """DEBUT()
+MA = LIRE_MAILLAGE(FORMAT='GMSH', UNITE=20)
+MA = MODI_MAILLAGE(reuse=MA, MAILLAGE=MA, ORIE_PEAU=_F(GROUP_MA_PEAU=('LOW_TOP', 'UP_BOT')))
+MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='D_PLAN'))
+ACIER = DEFI_MATERIAU(ELAS=_F(E=2.1e11, NU=0.3))
+CM = AFFE_MATERIAU(MAILLAGE=MA, AFFE=_F(TOUT='OUI', MATER=ACIER))
+BC = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=(_F(GROUP_MA='BAS', DY=0.0), _F(GROUP_MA='LOW_LEFT', DX=0.0),
+                                         _F(GROUP_MA='UP', DX=0.0, DY=0.0)))
+LOAD = AFFE_CHAR_MECA(MODELE=MO, PRES_REP=_F(GROUP_MA='LOW_TOP', PRES=1.0e6))
+RAMP = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0))
+L_INST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, NOMBRE=5))
+{contact}RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, {snl}EXCIT=(_F(CHARGE=BC), _F(CHARGE=LOAD, FONC_MULT=RAMP)),
+                     INCREMENT=_F(LIST_INST=L_INST))
+TEST_RESU(RESU=_F(RESULTAT=RESU, INST=1.0, NOM_CHAM='DEPL', NOM_CMP='DY', GROUP_NO='LOW_TOP', TYPE_TEST='MIN',
+                  VALE_CALC=-4.333333333333e-06, TOLE_MACHINE=1.0, REFERENCE='ANALYTIQUE',
+                  VALE_REFE=-4.333333333333e-06, PRECISION=1.0e-9, LEGENDE='(1 - nu^2) p H / E'))
+FIN()
+"""
+
+
+def far_zone(stella, workdir):
+    """An unused contact zone (the bodies 0.5 m apart, every gap far larger than the motion):
+    the same factorisations as without CONTACT and one pairing per step (no geometric loop: it
+    used to pair twice and factorise twice per step)."""
+    sys.path.insert(0, HERE)
+    from generate import stack_mesh
+    out = os.path.join(workdir, "far_zone")
+    os.makedirs(out, exist_ok=True)
+    stack_mesh(1.0, 1.0, 4, 2, 1.0, 0.2, 4, 1, gap=0.5).write(os.path.join(out, "far.msh"))
+    zone = ("CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='DISCRETE', ZONE=_F(GROUP_MA_MAIT='LOW_TOP', "
+            "GROUP_MA_ESCL='UP_BOT', ALGO_CONT='CONTRAINTE'))\n")
+    counts = {}
+    for tag, contact, snl in (("without", "", ""), ("with", zone, "CONTACT=CONT, ")):
+        comm = os.path.join(out, tag + ".comm")
+        with open(comm, "w") as f:
+            f.write(FAR_STUDY.format(contact=contact, snl=snl))
+        subprocess.run([stella, "run", comm, "--unit", "20=" + os.path.join(out, "far.msh")],
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
+        mess = open(os.path.join(out, tag + ".mess")).read()
+        m = re.search(r"factorisation [0-9.]+ \((\d+) symmetric, (\d+) unsymmetric\)", mess)
+        p = re.search(r"\((\d+) pairing\(s\)\)", mess)
+        counts[tag] = (m and int(m.group(1)), p and int(p.group(1)), "DIAGNOSTIC JOB : OK" in mess)
+    ok = counts["without"][2] and counts["with"][2] and counts["with"][0] == counts["without"][0] and \
+        counts["with"][1] == 6
+    print("unused contact zone far away: %d factorisations without CONTACT, %s with, %s pairing(s) (5 steps) %s" % (
+        counts["without"][0] or -1, counts["with"][0], counts["with"][1], "OK" if ok else "FAILED"))
+    return 0 if ok else 1
 
 
 def messages(stella, workdir):
