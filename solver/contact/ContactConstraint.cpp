@@ -35,6 +35,7 @@ ContactConstraint::ContactConstraint(std::shared_ptr<const ContactDefinition> de
   for (const auto& z : definition_->zones) {
     resolvedZone_.push_back(z.resolve);
     anyResolved_ = anyResolved_ || z.resolve;
+    resolvedSlaveNodes_ += z.resolve ? zoneSlaveNodes(*definition_->mesh, z).size() : 0;
   }
   contactEquations_ = contactEquations(*definition_, dofs_);
   uPairing_ = Eigen::VectorXd::Zero(dofs_.physicalCount());
@@ -70,6 +71,34 @@ std::string ContactConstraint::effects() const {
   return fmt::format("contact {} {}, {} zone(s), {} slave node(s), {}, {}", formulation, resolutionEffects(),
                      definition_->zones.size(), slaves,
                      definition_->hasFriction() ? "Coulomb friction" : "no friction", loop);
+}
+
+std::vector<std::string> ContactConstraint::zoneEffects() const {
+  std::vector<std::string> lines;
+  for (std::size_t k = 0; k < definition_->zones.size(); ++k) {
+    const ContactZone& z = definition_->zones[k];
+    std::string algorithm = fmt::format("ALGO_CONT='{}'", algorithmName(z.algorithm));
+    if (z.algorithm == ContactAlgorithm::Penalty) {
+      algorithm += fmt::format(" E_N={:g}", z.normalPenalty);
+    }
+    std::string friction = "no friction (FROTTEMENT='SANS')";
+    if (definition_->hasFriction()) {
+      friction =
+          fmt::format("Coulomb friction COULOMB={:g}{}", z.coulomb,
+                      z.algorithm == ContactAlgorithm::Penalty ? fmt::format(" E_T={:g}", z.tangentPenalty)
+                                                               : std::string());
+    }
+    lines.push_back(fmt::format(
+        "zone {}: GROUP_MA_ESCL='{}' on GROUP_MA_MAIT='{}', {}, {}, {} slave node(s){}", k + 1, z.slaveGroup,
+        z.masterGroup, z.resolve ? algorithm : std::string("RESOLUTION='NON' (gap measured, no force)"),
+        friction, zoneSlaveNodes(*definition_->mesh, z).size(),
+        z.pairing == Pairing::Nodal ? ", APPARIEMENT='NODAL'" : ", APPARIEMENT='MAIT_ESCL'"));
+  }
+  return lines;
+}
+
+std::string ContactConstraint::workSummary() const {
+  return fmt::format("{} pairing(s)", pairings_);
 }
 
 void ContactConstraint::pairAt(const Eigen::VectorXd& u) {
@@ -114,6 +143,19 @@ double ContactConstraint::geometricResidual(const Eigen::VectorXd& u) const {
   return change > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;
 }
 
+bool ContactConstraint::farApart(const Eigen::VectorXd& u) const {
+  if (rows_.link.empty() || rows_.link.size() != resolvedSlaveNodes_) {
+    return false; // a slave node without a link might find one when paired again
+  }
+  double change = 0.0;
+  for (int e : contactEquations_) {
+    change = std::max(change, std::abs(u(e) - uPairing_(e)));
+  }
+  // A point moved by at most sqrt(3) x the largest component; its gap after a new pairing
+  // differs from the linearised one by about that much: a margin of 4.
+  return gapsAt(u).minCoeff() > 4.0 * change;
+}
+
 bool ContactConstraint::acceptConvergence(const Eigen::VectorXd& u) {
   if (!acceptResolution(u)) {
     return false;
@@ -122,7 +164,7 @@ bool ContactConstraint::acceptConvergence(const Eigen::VectorXd& u) {
   if (anyResolved_) {
     const double r = geometricResidual(u);
     lastGeometricResidual_ = r;
-    if (s.geometricUpdate == GeometricUpdate::Automatic && r > s.geometricResidual) {
+    if (s.geometricUpdate == GeometricUpdate::Automatic && r > s.geometricResidual && !farApart(u)) {
       if (geometricIterations_ >= s.maxGeometricIterations) {
         throw UserError(
             Diagnostic::noConvergence(

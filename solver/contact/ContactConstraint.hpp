@@ -29,6 +29,8 @@ public:
   void initialize();
 
   std::string effects() const override;
+  std::vector<std::string> zoneEffects() const override;
+  std::string workSummary() const override;
   void beginStep(const Eigen::VectorXd& u, double time) override;
   bool acceptConvergence(const Eigen::VectorXd& u) override;
   std::string iterationNote() const override;
@@ -92,6 +94,12 @@ private:
   void finishStep(const Eigen::VectorXd& u);
 
   std::vector<int> contactEquations_;
+  std::size_t resolvedSlaveNodes_ = 0; // slave nodes of the zones with RESOLUTION='OUI'
+  // Every slave node of the resolved zones has a link and every gap at `u` exceeds the motion of
+  // the contact nodes since the pairing by a margin: pairing again cannot close a link, so the
+  // geometric loop (REAC_GEOM='AUTOMATIQUE') stops there: a zone far from contact costs one
+  // pairing per step, not a second Newton pass.
+  bool farApart(const Eigen::VectorXd& u) const;
   std::vector<LinkState> states_;
   int geometricIterations_ = 0;
   int contactIterations_ = 0;

@@ -8,6 +8,7 @@
 #include "solver/nonlinear/SymmetricTangent.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
@@ -67,6 +68,24 @@ void NewtonDriver::factorize(const MechanicalState& start, const Eigen::VectorXd
   factorizeMatrix(k, start.displacement + du);
 }
 
+double NewtonDriver::solverSeconds() const {
+  const SaddleSolver::Timings& t = system_.solver().timings();
+  return t.bordering + t.analysis + t.factorisation + t.solve;
+}
+
+template <class Call> decltype(auto) NewtonDriver::timedConstraint(Call&& call) {
+  struct Clock {
+    NewtonDriver& driver;
+    double solverStart;
+    std::chrono::steady_clock::time_point start;
+    ~Clock() {
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      driver.system_.phases().contact += std::max(0.0, elapsed - (driver.solverSeconds() - solverStart));
+    }
+  } clock{*this, solverSeconds(), std::chrono::steady_clock::now()};
+  return call();
+}
+
 bool NewtonDriver::symmetric() const {
   return system_.behaviours().allSymmetric() && (constraint_ == nullptr || constraint_->symmetric());
 }
@@ -96,7 +115,7 @@ void NewtonDriver::factorizeMatrix(StiffnessMatrix& k, const Eigen::VectorXd& u)
   if (constraint_ != nullptr) {
     std::vector<Eigen::Triplet<double>> triplets;
     Eigen::VectorXd unused = Eigen::VectorXd::Zero(u.size());
-    constraint_->addForces(u, unused, &triplets);
+    timedConstraint([&] { constraint_->addForces(u, unused, &triplets); });
     system_.solver().setPenaltyRatio(penaltyRatio(k, triplets)); // k: the structure's alone here
     if (!symmetric() && k.storage() == linalg::Storage::Upper) {
       // the constraint's tangent turned unsymmetric (friction): K in full storage
@@ -109,7 +128,9 @@ void NewtonDriver::factorizeMatrix(StiffnessMatrix& k, const Eigen::VectorXd& u)
     matrix = &symmetricPart(*matrix, system_.stiffness(true));
   }
   try {
-    system_.solver().factorize(*matrix, symmetric() || settings_.symmetrizeTangent);
+    const bool symmetricMatrix = symmetric() || settings_.symmetrizeTangent;
+    ++(symmetricMatrix ? symmetricFactorisations_ : unsymmetricFactorisations_);
+    system_.solver().factorize(*matrix, symmetricMatrix);
   } catch (const UserError& e) {
     const std::string note = constraint_ != nullptr ? constraint_->singularNote() : std::string();
     if (note.empty() || e.first().id != "SOLVE_1") {
@@ -124,7 +145,7 @@ void NewtonDriver::factorizeMatrix(StiffnessMatrix& k, const Eigen::VectorXd& u)
 Eigen::VectorXd NewtonDriver::constraintForces(const Eigen::VectorXd& u) {
   Eigen::VectorXd forces = Eigen::VectorXd::Zero(u.size());
   if (constraint_ != nullptr) {
-    constraint_->addForces(u, forces, nullptr);
+    timedConstraint([&] { constraint_->addForces(u, forces, nullptr); });
   }
   return forces;
 }
@@ -207,7 +228,7 @@ std::string NewtonDriver::predict(const MechanicalState& start, double time, con
   Eigen::VectorXd dl;
   system_.solver().solve(r, c, p, ddu, dl);
   if (constraint_ != nullptr) {
-    constraint_->correct(start.displacement, ddu, dl, system_.solver());
+    timedConstraint([&] { constraint_->correct(start.displacement, ddu, dl, system_.solver()); });
   }
   du += ddu;
   lambda += dl;
@@ -290,7 +311,7 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
   Eigen::VectorXd lambda = start.multipliers;
   StepOutcome out;
   if (constraint_ != nullptr) {
-    constraint_->beginStep(start.displacement, time);
+    timedConstraint([&] { constraint_->beginStep(start.displacement, time); });
   }
   {
     // The forces the step starts with: the new loads, the reactions of the start and the
@@ -398,8 +419,9 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
     out.iterations = iter;
     out.resiRela = rela;
     out.resiMaxi = maxi;
-    const bool accepted =
-        ok && (constraint_ == nullptr || constraint_->acceptConvergence(start.displacement + du));
+    const bool accepted = ok && (constraint_ == nullptr || timedConstraint([&] {
+                                   return constraint_->acceptConvergence(start.displacement + du);
+                                 }));
     if (ok && !accepted) {
       // The geometric loop paired again: at least one more correction with the new pairing.
       log_ << "   |      | " << constraint_->continuationNote() << "\n";
@@ -445,7 +467,7 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
     Eigen::VectorXd dl;
     system_.solver().solve(r, c, Eigen::VectorXd::Zero(n), ddu, dl);
     if (constraint_ != nullptr) {
-      constraint_->correct(start.displacement + du, ddu, dl, system_.solver());
+      timedConstraint([&] { constraint_->correct(start.displacement + du, ddu, dl, system_.solver()); });
     }
     rho = settings_.lineSearch.enabled
               ? lineSearch(start, du, ddu, lambda + dl, fext, r, out.lineSearchIterations)

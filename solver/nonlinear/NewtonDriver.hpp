@@ -90,6 +90,9 @@ public:
 
   // Converged steps so far (REAC_INCR counts them).
   int convergedSteps() const { return convergedSteps_; }
+  // Factorisations asked of the solver so far, as symmetric and as unsymmetric matrices.
+  int symmetricFactorisations() const { return symmetricFactorisations_; }
+  int unsymmetricFactorisations() const { return unsymmetricFactorisations_; }
 
 private:
   // The prediction of a step: the increment `du` and multipliers `lambda`; returns the matrix
@@ -116,6 +119,10 @@ private:
   // The constraint's forces at u (zero without a constraint).
   Eigen::VectorXd constraintForces(const Eigen::VectorXd& u);
   bool symmetric() const;
+  // Runs a call of the constraint, adding its time to the contact phase without the linear
+  // solutions it asks (those stay in the solver's phases).
+  template <class Call> decltype(auto) timedConstraint(Call&& call);
+  double solverSeconds() const;
 
   MechanicalSystem& system_;
   NewtonSettings settings_;
@@ -133,6 +140,8 @@ private:
   double residualReference(const Eigen::VectorXd& fext, const Eigen::VectorXd& reactions,
                            const Eigen::VectorXd& fint, const Eigen::VectorXd& forces) const;
   int convergedSteps_ = 0;
+  int symmetricFactorisations_ = 0;
+  int unsymmetricFactorisations_ = 0;
   bool factorized_ = false;
   Eigen::VectorXd lastIncrement_; // of the last converged step (EXTRAPOLE)
   Eigen::VectorXd lastMultiplierIncrement_;

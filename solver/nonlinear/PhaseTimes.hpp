@@ -16,10 +16,13 @@ struct PhaseTimes {
   double factorisation = 0.0;
   double solve = 0.0;
   double post = 0.0;
-  // STAT_NON_LINE: the rest of the command's time (contact pairing and active set, residual
+  // STAT_NON_LINE: the rest of the command's time (residual
   // norms and tests, the driver's bookkeeping); zero and not printed for MECA_STATIQUE.
   double other = 0.0;
-  double total() const { return numbering + assembly + factorisation + solve + post + other; }
+  // STAT_NON_LINE with CONTACT: the contact constraint's own time (pairing, active set, forces
+  // and tangents, CONT_NOEU), without the solutions it asks of the linear solver (in `solve`).
+  double contact = 0.0;
+  double total() const { return numbering + assembly + factorisation + solve + post + other + contact; }
 };
 
 // Peak resident set size of the process so far, in megabytes (getrusage).

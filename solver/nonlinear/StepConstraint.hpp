@@ -41,6 +41,14 @@ public:
   // CONTRAINTE, geometric loop AUTOMATIQUE").
   virtual std::string effects() const = 0;
 
+  // One line per zone for the effects report of STAT_NON_LINE (groups, algorithm, friction,
+  // slave nodes); empty when the constraint has no zones.
+  virtual std::vector<std::string> zoneEffects() const { return {}; }
+
+  // What the constraint did over the command, for the time-per-effect line at its end (e.g. "3
+  // pairing(s)"); may be empty.
+  virtual std::string workSummary() const { return {}; }
+
   // Start of a step from the converged displacement `u` (physical size).
   virtual void beginStep(const Eigen::VectorXd& u, double time) = 0;
 

@@ -18,6 +18,7 @@
 #include "solver/nonlinear/CommandInputs.hpp"
 #include "solver/nonlinear/ConvergenceTableOutput.hpp"
 #include "solver/nonlinear/DofMonitor.hpp"
+#include "solver/nonlinear/EffectsReport.hpp"
 #include "solver/nonlinear/NewtonDriver.hpp"
 #include "solver/nonlinear/Observation.hpp"
 #include "solver/nonlinear/PhaseTimes.hpp"
@@ -174,6 +175,7 @@ Value runStatNonLine(OperatorCall& call) {
   }
   driver.setConstraint(constraint.get());
   msg << effectsLine(system, settings, constraint.get(), cuts);
+  msg << effectsReport(kw, system, settings, constraint.get(), cuts, !observations.empty());
 
   MechanicalState state = driver.initialState(times.front());
   if (initialStep) {
@@ -266,6 +268,7 @@ Value runStatNonLine(OperatorCall& call) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - commandStart).count();
     phases.other = std::max(0.0, elapsed - phases.total());
     msg << formatPhases(phases, system.solver().timings().analyses);
+    msg << effectCosts(phases, system, driver, constraint.get());
   }
   if (!run.completed) {
     if (!lastStored) {
