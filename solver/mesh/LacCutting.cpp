@@ -190,6 +190,33 @@ void carryGroups(const Mesh& mesh, Mesh& out, const std::vector<std::vector<Cell
   }
 }
 
+// The nodes of `work` (those of `mesh`, then the new ones) named: the old names, then N<k> for
+// the k-th node (made unique against the old names, which may be anything).
+Mesh namedNodes(const Mesh& mesh, const Mesh& work) {
+  Mesh out;
+  out.setDimension(mesh.dimension());
+  out.setName(mesh.name());
+  out.reserveNodes(work.nodeCount());
+  if (mesh.nodeNames().isDefault()) {
+    for (NodeId n = 0; n < work.nodeCount(); ++n) {
+      out.addNode(work.point(n));
+    }
+    return out;
+  }
+  for (NodeId n = 0; n < work.nodeCount(); ++n) {
+    if (n < mesh.nodeCount()) {
+      out.addNode(work.point(n), mesh.nodeName(n));
+      continue;
+    }
+    std::string name = "N" + std::to_string(n + 1);
+    for (int k = 1; mesh.findNode(name).has_value(); ++k) {
+      name = "N" + std::to_string(n + 1) + "_" + std::to_string(k);
+    }
+    out.addNode(work.point(n), name);
+  }
+  return out;
+}
+
 } // namespace
 
 Mesh cutMeshForLac(const Mesh& mesh, const std::vector<std::string>& slaveGroups, LacHexaCut mode,
@@ -200,11 +227,11 @@ Mesh cutMeshForLac(const Mesh& mesh, const std::vector<std::string>& slaveGroups
   const auto slaves = slaveCells(mesh, slaveGroups, volumeDim, at, r);
   const auto owners = faceOwners(mesh, slaves, volumeDim, at);
 
-  Mesh out;
-  out.setDimension(mesh.dimension());
-  out.setName(mesh.name());
+  // The cuts add their nodes to `work` (default names: adding is O(1)); `out` gets the names.
+  Mesh work;
+  work.reserveNodes(mesh.nodeCount());
   for (NodeId n = 0; n < mesh.nodeCount(); ++n) {
-    mesh.nodeNames().isDefault() ? out.addNode(mesh.point(n)) : out.addNode(mesh.point(n), mesh.nodeName(n));
+    work.addNode(mesh.point(n));
   }
   std::map<CellId, std::vector<std::size_t>> slavesOfCell;
   for (std::size_t i = 0; i < slaves.size(); ++i) {
@@ -221,7 +248,7 @@ Mesh cutMeshForLac(const Mesh& mesh, const std::vector<std::string>& slaveGroups
         continue;
       }
       const auto [j, f] = pieceWithFace(current, sortedVertices(mesh.cellNodes(s), mesh.cellType(s)));
-      LacCut cut = cutCellForLac(out, current[j], f, mesh.cellNodes(s), mode);
+      LacCut cut = cutCellForLac(work, current[j], f, mesh.cellNodes(s), mode);
       current.erase(current.begin() + static_cast<std::ptrdiff_t>(j));
       current.insert(current.begin() + static_cast<std::ptrdiff_t>(j), cut.cells.begin(), cut.cells.end());
       pieces[static_cast<std::size_t>(s)] = std::move(cut.faces);
@@ -235,6 +262,7 @@ Mesh cutMeshForLac(const Mesh& mesh, const std::vector<std::string>& slaveGroups
     }
   }
 
+  Mesh out = namedNodes(mesh, work);
   std::vector<std::vector<CellId>> outIds(static_cast<std::size_t>(mesh.cellCount()));
   int counter = mesh.cellCount();
   const auto newName = [&] {

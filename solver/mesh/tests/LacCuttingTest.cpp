@@ -362,6 +362,25 @@ TEST(LacCutting, PatchesFollowTheSlaveGroups) {
   EXPECT_TRUE(out.findCell("M" + std::to_string(m.cellCount() + 1)).has_value());
 }
 
+TEST(LacCutting, NewNodesGetNamesUnlikeTheOldOnes) {
+  const Mesh q = buildStructuredMesh({CellType::QUAD4, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}});
+  Mesh m;
+  m.setDimension(2);
+  for (NodeId n = 0; n < q.nodeCount(); ++n) {
+    m.addNode(q.point(n), n == 0 ? "N7" : "P" + std::to_string(n)); // N7: the first new node's name
+  }
+  for (CellId c = 0; c < q.cellCount(); ++c) {
+    m.addCell(q.cellType(c), q.cellNodes(c));
+  }
+  m.setCellGroup("YMAX", *q.cellGroup("YMAX"));
+  const Mesh out = cutMeshForLac(m, {"YMAX"}, LacHexaCut::Pyramids, {});
+  ASSERT_EQ(out.nodeCount(), 14);
+  EXPECT_EQ(out.nodeName(0), "N7");
+  EXPECT_EQ(out.nodeName(6), "N7_1");
+  EXPECT_EQ(out.nodeName(7), "N8");
+  EXPECT_EQ(out.findNode("P3"), std::optional<NodeId>(3));
+}
+
 TEST(LacCutting, RefusesWhatItCannotCut) {
   const Mesh m = buildStructuredMesh({CellType::HEXA8, {2, 1, 1}, {2, 1, 1}, {0, 0, 0}});
   EXPECT_THROW(cutMeshForLac(m, {"VOLUME"}, LacHexaCut::Pyramids, {}), UserError); // CREALAC_1
