@@ -13,13 +13,15 @@ namespace {
 
 TEST(LacCuttingCommand, CutsAndRefusesWithLocatedErrors) {
   const auto dir = testing::tempDir("decoupe_lac_cmd");
-  writeAsterMesh(dir / "box.mail", buildStructuredMesh({CellType::HEXA8, {2, 2, 1}, {2, 2, 1}, {0, 0, 0}}), {"box"});
-  const auto ok = testing::runComm(dir, "ok",
-                                   "DEBUT()\n"
-                                   "M0 = LIRE_MAILLAGE(FORMAT='ASTER', UNITE=20)\n"
-                                   "M = CREA_MAILLAGE(MAILLAGE=M0, DECOUPE_LAC=_F(GROUP_MA_ESCL='ZMAX', DECOUPE_HEXA='HEXA'))\n"
-                                   "FIN()\n",
-                                   {{20, dir / "box.mail"}});
+  writeAsterMesh(dir / "box.mail", buildStructuredMesh({CellType::HEXA8, {2, 2, 1}, {2, 2, 1}, {0, 0, 0}}),
+                 {"box"});
+  const auto ok = testing::runComm(
+      dir, "ok",
+      "DEBUT()\n"
+      "M0 = LIRE_MAILLAGE(FORMAT='ASTER', UNITE=20)\n"
+      "M = CREA_MAILLAGE(MAILLAGE=M0, DECOUPE_LAC=_F(GROUP_MA_ESCL='ZMAX', DECOUPE_HEXA='HEXA'))\n"
+      "FIN()\n",
+      {{20, dir / "box.mail"}});
   EXPECT_EQ(ok.diagnostic, JobDiagnostic::Ok) << ok.message;
   EXPECT_NE(ok.message.find("DECOUPE_LAC: 4 cells cut, 32 nodes and 36 cells added"), std::string::npos)
       << ok.message;
