@@ -169,17 +169,32 @@ private:
 
   void writePerCell(const std::string& name, const Field& field, const ResultStep& step,
                     const std::vector<std::size_t>& kept) {
+    // A partial field (CONT_ELEM on the slave cells) is written on the cells where it has a value,
+    // through a profile of their positions in their type's block.
     for (const auto& [t, cells] : blocks()) {
       std::vector<med_float> v;
-      for (const CellId c : cells) {
+      std::vector<med_int> numbers;
+      for (std::size_t i = 0; i < cells.size(); ++i) {
+        const auto e = static_cast<std::size_t>(cells[i]);
+        bool any = !field.partial();
         for (const auto k : kept) {
-          const auto e = static_cast<std::size_t>(c);
+          any = any || (e < field.entityCount() && field.defined(e, k));
+        }
+        if (!any) {
+          continue;
+        }
+        numbers.push_back(static_cast<med_int>(i + 1));
+        for (const auto k : kept) {
           v.push_back(e < field.entityCount() && (!field.partial() || field.defined(e, k)) ? field.value(e, k)
                                                                                            : 0.0);
         }
       }
-      values(name, step, MED_CELL, medGeometryOf(t), MED_ALLENTITIES_PROFILE, MED_NO_LOCALIZATION,
-             static_cast<med_int>(cells.size()), v);
+      if (numbers.empty()) {
+        continue;
+      }
+      const bool all = numbers.size() == cells.size();
+      values(name, step, MED_CELL, medGeometryOf(t), all ? MED_ALLENTITIES_PROFILE : profile(numbers),
+             MED_NO_LOCALIZATION, static_cast<med_int>(numbers.size()), v);
     }
   }
 

@@ -86,6 +86,16 @@ public:
   bool removeCellGroup(const std::string& name) { return cellGroups_.erase(name) != 0; }
   bool removeNodeGroup(const std::string& name) { return nodeGroups_.erase(name) != 0; }
 
+  // ---- LAC patches, set by CREA_MAILLAGE/DECOUPE_LAC (empty otherwise; operations that rebuild
+  // the mesh drop them): for each slave cell of the original mesh, the slave cells it was cut
+  // into and the GROUP_MA_ESCL group (contact zone) it came from.
+  struct LacPatch {
+    std::string zone;
+    std::vector<CellId> cells;
+  };
+  const std::vector<LacPatch>& lacPatches() const { return lacPatches_; }
+  void setLacPatches(std::vector<LacPatch> patches) { lacPatches_ = std::move(patches); }
+
   // Nodes used by the given cells (sorted, unique).
   std::vector<NodeId> nodesOfCells(std::span<const CellId> cells) const;
 
@@ -103,6 +113,7 @@ private:
   NameTable cellNames_{'M'};
   std::map<std::string, std::vector<CellId>> cellGroups_;
   std::map<std::string, std::vector<NodeId>> nodeGroups_;
+  std::vector<LacPatch> lacPatches_;
 };
 
 } // namespace stella

@@ -1,8 +1,9 @@
 // CREA_MAILLAGE: a new mesh from MAILLAGE by one operation: LINE_QUAD, QUAD_LINE, HEXA20_27,
-// PENTA15_18, MODI_MAILLE (QUAD8_9, TRIA6_7, SEG3_4), CREA_POI1, RESTREINT. Others (DECOUPE_LAC
-// belongs to the mortar contact code) are refused as not implemented yet here.
+// PENTA15_18, MODI_MAILLE (QUAD8_9, TRIA6_7, SEG3_4), CREA_POI1, RESTREINT, DECOUPE_LAC (the
+// patches of LAC contact, solver/mesh/LacCutting.hpp). Others are refused as not implemented yet.
 
 #include "solver/mesh/GroupOperations.hpp"
+#include "solver/mesh/LacCutting.hpp"
 #include "solver/mesh/MeshConversion.hpp"
 #include "solver/mesh/MeshSummary.hpp"
 #include "solver/operators/MeshOperatorUtil.hpp"
@@ -16,7 +17,23 @@ std::vector<CellId> selection(const Mesh& mesh, const KeywordTree& occ) {
   return occ.has("GROUP_MA") ? cellsOfGroups(mesh, occ, "GROUP_MA") : std::vector<CellId>{};
 }
 
-Mesh apply(const Mesh& mesh, const KeywordTree& kw) {
+// DECOUPE_LAC: GROUP_MA_ESCL (each group a contact zone), DECOUPE_HEXA.
+Mesh decoupeLac(const Mesh& mesh, const KeywordTree& occ, std::ostream& message) {
+  const auto groups = occ.texts("GROUP_MA_ESCL");
+  cellsOfGroups(mesh, occ, "GROUP_MA_ESCL"); // MESHOP_1 for a missing group
+  const LacHexaCut mode = occ.text("DECOUPE_HEXA") == "HEXA" ? LacHexaCut::Hexahedra : LacHexaCut::Pyramids;
+  LacCuttingReport report;
+  Mesh out = cutMeshForLac(mesh, groups, mode, occ.locationOf("GROUP_MA_ESCL"), &report);
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    message << "DECOUPE_LAC: slave group " << g + 1 << " (" << groups[g]
+            << "): " << report.slaveCellsPerGroup[g] << " cells\n";
+  }
+  message << "DECOUPE_LAC: " << report.cutCells << " cells cut, " << out.nodeCount() - mesh.nodeCount()
+          << " nodes and " << out.cellCount() - mesh.cellCount() << " cells added\n";
+  return out;
+}
+
+Mesh apply(const Mesh& mesh, const KeywordTree& kw, std::ostream& message) {
   const std::pair<const char*, CellConversion> simple[] = {{"LINE_QUAD", CellConversion::LineToQuad},
                                                            {"QUAD_LINE", CellConversion::QuadToLine},
                                                            {"HEXA20_27", CellConversion::Hexa20To27},
@@ -65,6 +82,9 @@ Mesh apply(const Mesh& mesh, const KeywordTree& kw) {
     }
     return out;
   }
+  if (kw.has("DECOUPE_LAC")) {
+    return decoupeLac(mesh, kw.occurrences("DECOUPE_LAC").front(), message);
+  }
   if (kw.has("RESTREINT")) {
     const auto& occ = kw.occurrences("RESTREINT").front();
     auto cellGroups = occ.texts("GROUP_MA");
@@ -96,7 +116,7 @@ Mesh apply(const Mesh& mesh, const KeywordTree& kw) {
 Value runCreaMaillage(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
   auto source = meshConceptOf(kw);
-  auto mesh = std::make_shared<Mesh>(apply(*source->mesh, kw));
+  auto mesh = std::make_shared<Mesh>(apply(*source->mesh, kw, call.session.message()));
   mesh->setName(call.resultName);
   call.session.message() << meshSummary(*mesh, call.resultName, kw.integerOr("INFO", 1) >= 2);
   return call.makeConcept(std::make_shared<MeshConcept>(mesh));
