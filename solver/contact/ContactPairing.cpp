@@ -73,6 +73,7 @@ struct ZonePairing::Scratch {
   std::vector<std::uint32_t> stamp; // per master cell: the epoch of the last node that tried it
   std::uint32_t epoch = 0;
   long searched = 0;
+  int lastCell = -1; // the previous node's cell: the first pairing's start
 
   void nextNode() {
     if (++epoch == 0) {
@@ -195,6 +196,15 @@ int ZonePairing::findCell(const Point3& x, int previous, Scratch& s) const {
     m.gather(c, cn);
     s.candidates.push_back(projectionCandidate(cn, c, dim_, x, zone_.extensionTolerance));
   };
+  // The cells of the R-tree's cube whose boxes are within `within` of x (Euclidean).
+  auto tryAround = [&](double within) {
+    m.index().queryAround(x, within, s.found);
+    for (int c : s.found) {
+      if (squaredDistance(m.box(c), x) <= within * within) {
+        tryCell(c);
+      }
+    }
+  };
   auto select = [&] {
     return selectCandidate(s.candidates.data(), s.candidates.data() + s.candidates.size(), tieTolerance_);
   };
@@ -204,21 +214,25 @@ int ZonePairing::findCell(const Point3& x, int previous, Scratch& s) const {
     }
     return select();
   }
+  // 1. The previous cell (the node's last pairing, or the previous node's cell the first time),
+  // 2. its neighbours, 3. growing balls in the R-tree until one holds an admissible projection.
   double d = unbounded;
-  double covered = -1.0; // every cell whose box is within this L-infinity distance was tried
+  double covered = -1.0; // every cell whose box is within this distance was tried
   if (previous >= 0) {
-    for (int c : m.neighbours(previous)) {
-      tryCell(c);
-    }
+    tryCell(previous);
     d = smallestAdmissible(s.candidates);
-  }
-  if (d == unbounded) {
-    double r = m.meanCellSize() > 0.0 ? m.meanCellSize() : 1e-3 * m.lengthScale();
-    for (;;) {
-      m.index().queryAround(x, r, s.found);
-      for (int c : s.found) {
+    if (d == unbounded) {
+      for (int c : m.neighbours(previous)) {
         tryCell(c);
       }
+      d = smallestAdmissible(s.candidates);
+    }
+  }
+  if (d == unbounded) {
+    ++s.searched;
+    double r = m.meanCellSize() > 0.0 ? m.meanCellSize() : 1e-3 * m.lengthScale();
+    for (;;) {
+      tryAround(r);
       covered = r;
       d = smallestAdmissible(s.candidates);
       if (d < unbounded || s.found.size() == static_cast<std::size_t>(m.cellCount())) {
@@ -227,22 +241,13 @@ int ZonePairing::findCell(const Point3& x, int previous, Scratch& s) const {
       r *= 2.0;
     }
     if (d == unbounded) {
-      ++s.searched;
       return -1;
     }
   }
   // The certificate: a cell offering a projection within d (+ ties) has its box within d.
-  const std::size_t before = s.candidates.size();
   const double reach = d + tieTolerance_;
   if (reach > covered) {
-    m.index().queryAround(x, reach, s.found);
-    for (int c : s.found) {
-      tryCell(c);
-    }
-  }
-  // Warm: the previous cell's neighbours held the answer and the certificate added no cell.
-  if (covered >= 0.0 || s.candidates.size() > before) {
-    ++s.searched;
+    tryAround(reach);
   }
   return select();
 }
@@ -311,7 +316,8 @@ void ZonePairing::pairNode(const NodePosition& position, std::size_t i, Scratch&
     d1 = Point3{-masterNormal[1], masterNormal[0], 0.0};
     link.paired = true;
   } else {
-    const int best = findCell(x, first_ ? -1 : previous_[i], scratch);
+    const int best = findCell(x, first_ ? scratch.lastCell : previous_[i], scratch);
+    scratch.lastCell = best >= 0 ? scratch.candidates[static_cast<std::size_t>(best)].cell : scratch.lastCell;
     if (best < 0) {
       previous_[i] = -1;
       return;

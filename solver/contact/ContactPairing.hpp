@@ -69,7 +69,8 @@ public:
 
   const std::vector<ContactLink>& pair(const NodePosition& position);
   const std::vector<ContactLink>& links() const { return links_; }
-  // Slave nodes whose last pairing needed a search beyond their previous cell's neighbours.
+  // Slave nodes of the last pairing not held by their previous cell or its neighbours (searched
+  // in the R-tree by growing balls; every node the first time).
   long searchedNodes() const { return searched_; }
 
 private:

@@ -68,6 +68,15 @@ Box3 cellBox(CellType type, const Point3* points, int count, double margin) {
   return b;
 }
 
+double squaredDistance(const Box3& box, const Point3& x) {
+  double s = 0.0;
+  for (std::size_t a = 0; a < 3; ++a) {
+    const double d = std::max({box.lo[a] - x[a], x[a] - box.hi[a], 0.0});
+    s += d * d;
+  }
+  return s;
+}
+
 MasterCellIndex::MasterCellIndex() : tree_(std::make_unique<Tree>()) {}
 MasterCellIndex::~MasterCellIndex() = default;
 MasterCellIndex::MasterCellIndex(MasterCellIndex&&) noexcept = default;

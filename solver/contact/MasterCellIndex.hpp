@@ -27,6 +27,9 @@ struct Box3 {
 // cell of that type (curved cells: see above), inflated by `margin` on every side.
 Box3 cellBox(CellType type, const Point3* points, int count, double margin);
 
+// Squared Euclidean distance from x to the box (0 inside).
+double squaredDistance(const Box3& box, const Point3& x);
+
 class MasterCellIndex {
 public:
   MasterCellIndex();

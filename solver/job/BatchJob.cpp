@@ -45,6 +45,7 @@ struct JobSpec {
   fs::path outputDirectory;     // where the steps of a failed command are copied back
   std::string stem;             // of the export or command file: <stem>.<RESULT>.incomplete.rmed
   unsigned timeLimit = 0;       // P time_limit, seconds (0: none)
+  int cpus = 1;                 // P ncpus
 };
 
 constexpr const char* workMarker = ".stella-work";
@@ -345,6 +346,7 @@ JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
   SessionOptions sessionOptions;
   sessionOptions.referenceOnly = options.referenceOnly;
   sessionOptions.workDirectory = work;
+  sessionOptions.cpus = spec.cpus;
   // The steps of a failed command go beside the message file, where the user looks first.
   const auto messDestination = spec.results.find(6);
   sessionOptions.keptResultsDirectory =
@@ -450,6 +452,23 @@ unsigned timeLimitOf(const Export& study) {
   return static_cast<unsigned>(std::ceil(seconds));
 }
 
+// P ncpus <n>: the threads a command may use (the contact pairing's slave-node chunks).
+int cpusOf(const Export& study) {
+  if (!study.hasParameter("ncpus")) {
+    return 1;
+  }
+  const std::vector<std::string> words = study.parameter("ncpus");
+  char* end = nullptr;
+  const long n = words.size() == 1 ? std::strtol(words.front().c_str(), &end, 10) : -1;
+  if (words.size() != 1 || end == words.front().c_str() || *end != '\0' || n < 1 || n > 1024) {
+    throw UserError(
+        Diagnostic::fatal("EXPORT_10", "P ncpus expects one whole number of threads from 1 to 1024, got '" +
+                                           fmt::format("{}", fmt::join(words, " ")) + "'")
+            .withNote(study.file.string() + ": write e.g. P ncpus 2"));
+  }
+  return static_cast<int>(n);
+}
+
 } // namespace
 
 JobResult runExport(const Export& study, const RunOptions& options) {
@@ -476,6 +495,7 @@ JobResult runExport(const Export& study, const RunOptions& options) {
   spec.outputDirectory = outputBase;
   spec.stem = study.file.stem().string();
   spec.timeLimit = timeLimitOf(study);
+  spec.cpus = cpusOf(study);
   spec.isTestcase = study.hasParameter("testlist");
   spec.expectedDiagnostics = study.parameter("expected_diag");
   return runSpec(spec, options);
