@@ -24,7 +24,8 @@ using namespace stella;
 
 namespace {
 
-// A k x k grid of QUAD4 faces over [a, b]^2 at height z0 + the wave; returns the cell ids.
+// A k x k grid of QUAD4 faces over [a, b]^2 at height z0 + the wave, normals towards +z; returns
+// the cell ids.
 std::vector<CellId> grid(Mesh& mesh, int k, double a, double b, double z0) {
   const NodeId base = mesh.nodeCount();
   for (int j = 0; j <= k; ++j) {
@@ -38,7 +39,7 @@ std::vector<CellId> grid(Mesh& mesh, int k, double a, double b, double z0) {
   for (int j = 0; j < k; ++j) {
     for (int i = 0; i < k; ++i) {
       const NodeId c = base + j * (k + 1) + i;
-      cells.push_back(mesh.addCell(CellType::QUAD4, std::vector<NodeId>{c, c + k + 1, c + k + 2, c + 1}));
+      cells.push_back(mesh.addCell(CellType::QUAD4, std::vector<NodeId>{c, c + 1, c + k + 2, c + k + 1}));
     }
   }
   return cells;
