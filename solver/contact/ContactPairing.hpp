@@ -7,7 +7,7 @@
 //              TOLE_PROJ_EXT (parametric distance) is refused, a smaller one is brought back onto
 //              the cell. The node pairs with the nearest admissible projection over ALL master
 //              cells (ties: CellProjection.hpp selectCandidate), found exactly with the R-tree of
-//              MasterCellIndex.hpp: cubes around the node grow until one holds an admissible
+//              MasterCellIndex.hpp: balls around the node grow until one holds an admissible
 //              projection at distance d, then every cell whose box is within d is tried.
 //   NODAL      the nearest master node, along the slave normal (ties: the smallest node id).
 // DIST_APPA (> 0) refuses pairs farther apart. Normals: NORMALE MAIT (master outward normal),
