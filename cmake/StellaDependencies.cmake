@@ -32,6 +32,14 @@ stella_require(GTest_FOUND "GoogleTest" libgtest-dev)
 find_package(HDF5 QUIET COMPONENTS C)
 stella_require(HDF5_FOUND "HDF5" libhdf5-dev)
 
+# Boost.Geometry's R-tree (header-only) indexes the contact master cells (solver/contact).
+find_path(BOOST_GEOMETRY_INCLUDE_DIR boost/geometry/index/rtree.hpp)
+if(BOOST_GEOMETRY_INCLUDE_DIR)
+  add_library(Boost::geometry INTERFACE IMPORTED)
+  set_target_properties(Boost::geometry PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${BOOST_GEOMETRY_INCLUDE_DIR}")
+endif()
+stella_require(BOOST_GEOMETRY_INCLUDE_DIR "Boost.Geometry" libboost-dev)
+
 # zlib compresses the appended data of the VTU result files (IMPR_RESU FORMAT='VTU').
 find_package(ZLIB QUIET)
 stella_require(ZLIB_FOUND "zlib" zlib1g-dev)

@@ -101,10 +101,31 @@ std::string ContactConstraint::workSummary() const {
   return fmt::format("{} pairing(s)", pairings_);
 }
 
+const std::vector<ContactLink>& ContactConstraint::pairZoneAt(std::size_t z, const NodePosition& position) {
+  if (zonePairings_.empty()) {
+    PairingOptions options;
+    options.dimension = definition_->mesh->dimension();
+    options.smoothing = definition_->settings.smoothing;
+    options.threads = pairingThreads_;
+    for (std::size_t k = 0; k < definition_->zones.size(); ++k) {
+      zonePairings_.emplace_back(*definition_->mesh, static_cast<int>(k), definition_->zones[k], options);
+    }
+  }
+  return zonePairings_[z].pair(position);
+}
+
 void ContactConstraint::pairAt(const Eigen::VectorXd& u) {
   const Mesh& mesh = *definition_->mesh;
   const std::vector<double> disp = nodalDisplacement(dofs_, mesh.nodeCount(), u);
-  links_ = pairAll(*definition_, meshPositions(mesh, &disp));
+  const NodePosition position = meshPositions(mesh, &disp);
+  std::size_t k = 0;
+  for (std::size_t z = 0; z < definition_->zones.size(); ++z) {
+    const auto& zoneLinks = pairZoneAt(z, position);
+    links_.resize(std::max(links_.size(), k + zoneLinks.size()));
+    std::copy(zoneLinks.begin(), zoneLinks.end(), links_.begin() + static_cast<std::ptrdiff_t>(k));
+    k += zoneLinks.size();
+  }
+  links_.resize(k);
   rows_ = buildLinkRows(links_, dofs_, resolvedZone_, {}, withFrictionRows());
   uPairing_ = u;
   ++pairings_;
@@ -212,9 +233,6 @@ void ContactConstraint::finishStep(const Eigen::VectorXd& u) {
   const std::vector<double> disp = nodalDisplacement(dofs_, mesh.nodeCount(), u);
   const std::vector<double> change = nodalDisplacement(dofs_, mesh.nodeCount(), u - uPairing_);
   const bool repair = definition_->settings.geometricUpdate != GeometricUpdate::None;
-  PairingOptions options;
-  options.dimension = mesh.dimension();
-  options.smoothing = definition_->settings.smoothing;
   std::size_t offset = 0;
   for (std::size_t z = 0; z < definition_->zones.size(); ++z) {
     std::size_t count = 0;
@@ -222,11 +240,8 @@ void ContactConstraint::finishStep(const Eigen::VectorXd& u) {
       ++count;
     }
     if (!resolvedZone_[z]) {
-      std::vector<ContactLink> fresh;
-      if (repair) {
-        fresh =
-            pairZone(mesh, meshPositions(mesh, &disp), static_cast<int>(z), definition_->zones[z], options);
-      }
+      static const std::vector<ContactLink> none;
+      const std::vector<ContactLink>& fresh = repair ? pairZoneAt(z, meshPositions(mesh, &disp)) : none;
       for (std::size_t k = offset; k < offset + count; ++k) {
         if (repair && k - offset < fresh.size()) {
           links_[k] = fresh[k - offset];

@@ -27,6 +27,8 @@ public:
   ContactConstraint(std::shared_ptr<const ContactDefinition> definition, const DofMap& dofs);
   // The first pairing, on the initial configuration (called once after construction).
   void initialize();
+  // Slave-node chunks paired at once (P ncpus); before initialize().
+  void setPairingThreads(int threads) { pairingThreads_ = threads; }
 
   std::string effects() const override;
   std::vector<std::string> zoneEffects() const override;
@@ -87,6 +89,8 @@ protected:
 
 private:
   void pairAt(const Eigen::VectorXd& u);
+  // Pairs zone z at the positions (its ZonePairing, warm after the first call).
+  const std::vector<ContactLink>& pairZoneAt(std::size_t z, const NodePosition& position);
   // Criterion of the geometric loop: max |u - u_pairing| on the contact nodes over the step's
   // displacement max |u - u_start| (all DOFs).
   double geometricResidual(const Eigen::VectorXd& u) const;
@@ -100,6 +104,8 @@ private:
   // geometric loop (REAC_GEOM='AUTOMATIQUE') stops there: a zone far from contact costs one
   // pairing per step, not a second Newton pass.
   bool farApart(const Eigen::VectorXd& u) const;
+  std::vector<ZonePairing> zonePairings_; // one per zone, kept across the geometric loop
+  int pairingThreads_ = 1;
   std::vector<LinkState> states_;
   int geometricIterations_ = 0;
   int contactIterations_ = 0;

@@ -1,11 +1,10 @@
-// Pairing of contact zones: nearest master nodes by kd-tree, orthogonal projection on the
-// master cells around them (Gauss-Newton on the parametric coordinates), normals, tangents and
-// gaps; nodal pairing.
+// Pairing of contact zones: exact nearest admissible projection over the master cells through
+// the R-tree of their boxes (MasterCellIndex), warm start from the previous pairing, slave-node
+// chunks in parallel; normals, tangents and gaps; nodal pairing.
 
 #include "solver/contact/ContactPairing.hpp"
 
-#include "solver/contact/PointSearchTree.hpp"
-#include "solver/fem/ReferenceElement.hpp"
+#include "solver/contact/MasterSurface.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 
 #include <fmt/format.h>
@@ -13,86 +12,17 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <unordered_map>
+#include <thread>
 
 namespace stella::contact {
 
 namespace {
 
+constexpr double unbounded = std::numeric_limits<double>::max();
+
 Point3 normalized(const Point3& v) {
   const double n = norm(v);
   return n > 0.0 ? (1.0 / n) * v : v;
-}
-
-bool isTriangle(CellType t) {
-  return t == CellType::TRIA3 || t == CellType::TRIA6;
-}
-
-// Parametric distance outside the reference cell (0 inside) and the closest inside point.
-double outsideDistance(CellType t, int dim, const std::array<double, 2>& xi, std::array<double, 2>& clamped) {
-  clamped = xi;
-  if (dim == 1) {
-    clamped[0] = std::clamp(xi[0], -1.0, 1.0);
-    clamped[1] = 0.0;
-    return std::abs(xi[0] - clamped[0]);
-  }
-  if (!isTriangle(t)) {
-    clamped[0] = std::clamp(xi[0], -1.0, 1.0);
-    clamped[1] = std::clamp(xi[1], -1.0, 1.0);
-    return std::max(std::abs(xi[0] - clamped[0]), std::abs(xi[1] - clamped[1]));
-  }
-  // Triangle 0 <= xi, eta; xi + eta <= 1.
-  double a = std::max(xi[0], 0.0);
-  double b = std::max(xi[1], 0.0);
-  if (a + b > 1.0) {
-    const double excess = (a + b - 1.0) / 2.0;
-    a -= excess;
-    b -= excess;
-    if (a < 0.0) {
-      b = 1.0;
-      a = 0.0;
-    } else if (b < 0.0) {
-      a = 1.0;
-      b = 0.0;
-    }
-  }
-  clamped = {a, b};
-  return std::max({-xi[0], -xi[1], xi[0] + xi[1] - 1.0, 0.0});
-}
-
-struct CellGeometry {
-  Point3 x{0, 0, 0};
-  Point3 d1{0, 0, 0}; // dx/dxi
-  Point3 d2{0, 0, 0}; // dx/deta (3D)
-  Eigen::VectorXd n;
-};
-
-CellGeometry evaluate(const Mesh& mesh, const NodePosition& position, CellId cell,
-                      const std::array<double, 2>& xi) {
-  const auto& ref = fem::referenceElement(mesh.cellType(cell));
-  const Eigen::Vector3d p(xi[0], xi[1], 0.0);
-  CellGeometry g;
-  g.n = ref.values(p);
-  const Eigen::MatrixXd dn = ref.gradients(p);
-  const auto nodes = mesh.cellNodes(cell);
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
-    const Point3 xn = position(nodes[i]);
-    const auto ii = static_cast<Eigen::Index>(i);
-    g.x = g.x + g.n(ii) * xn;
-    g.d1 = g.d1 + dn(ii, 0) * xn;
-    if (dn.cols() > 1) {
-      g.d2 = g.d2 + dn(ii, 1) * xn;
-    }
-  }
-  return g;
-}
-
-// Outward normal of a skin cell from its parametric derivatives (consistent with cellNormal).
-Point3 cellNormalAt(const CellGeometry& g, int dim) {
-  if (dim == 1) {
-    return normalized(Point3{g.d1[1], -g.d1[0], 0.0});
-  }
-  return normalized(cross(g.d1, g.d2));
 }
 
 // Unit tangents orthogonal to n: the first along the cell's first parametric direction when
@@ -112,44 +42,6 @@ void tangents(const Point3& n, const Point3& d1, int dim, Point3& t1, Point3& t2
   t2 = cross(n, t1);
 }
 
-struct Surface {
-  std::vector<CellId> cells;
-  std::vector<NodeId> nodes; // sorted
-  std::unordered_map<NodeId, std::vector<CellId>> cellsOfNode;
-  std::unordered_map<NodeId, Point3> nodalNormal; // averaged unit normals (outward)
-};
-
-Surface buildSurface(const Mesh& mesh, const NodePosition& position, const std::vector<CellId>& cells,
-                     int dim) {
-  Surface s;
-  s.cells = cells;
-  s.nodes = mesh.nodesOfCells(cells);
-  for (CellId c : cells) {
-    const auto& ref = fem::referenceElement(mesh.cellType(c));
-    const auto nodes = mesh.cellNodes(c);
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-      s.cellsOfNode[nodes[i]].push_back(c);
-      const auto& xn = ref.node(static_cast<int>(i));
-      const auto g = evaluate(mesh, position, c, {xn(0), xn(1)});
-      auto& acc = s.nodalNormal[nodes[i]];
-      acc = acc + cellNormalAt(g, dim);
-    }
-  }
-  for (auto& [node, n] : s.nodalNormal) {
-    n = normalized(n);
-  }
-  return s;
-}
-
-Point3 smoothedNormal(const Surface& s, const Mesh& mesh, CellId cell, const Eigen::VectorXd& shape) {
-  Point3 n{0, 0, 0};
-  const auto nodes = mesh.cellNodes(cell);
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
-    n = n + shape(static_cast<Eigen::Index>(i)) * s.nodalNormal.at(nodes[i]);
-  }
-  return normalized(n);
-}
-
 Point3 chosenVector(VectorChoice choice, const std::array<double, 3>& value, const Point3& geometric,
                     const Point3& d1) {
   if (choice == VectorChoice::Fixed) {
@@ -163,22 +55,34 @@ Point3 chosenVector(VectorChoice choice, const std::array<double, 3>& value, con
   return geometric;
 }
 
-struct Candidate {
-  CellId cell = -1;
-  std::array<double, 2> xi{0, 0};
-  double distance = std::numeric_limits<double>::max();
-};
-
-std::vector<NodeId> searchNodes(const PointSearchTree& tree, const std::vector<NodeId>& masterNodes,
-                                const Point3& x, int k) {
-  std::vector<NodeId> out;
-  for (int i : tree.nearest(x, k)) {
-    out.push_back(masterNodes[static_cast<std::size_t>(i)]);
+double smallestAdmissible(const std::vector<Candidate>& candidates) {
+  double d = unbounded;
+  for (const Candidate& c : candidates) {
+    if (c.admissible) {
+      d = std::min(d, c.distance);
+    }
   }
-  return out;
+  return d;
 }
 
 } // namespace
+
+struct ZonePairing::Scratch {
+  std::vector<int> found;
+  std::vector<Candidate> candidates;
+  std::vector<std::uint32_t> stamp; // per master cell: the epoch of the last node that tried it
+  std::uint32_t epoch = 0;
+  long searched = 0;
+  int lastCell = -1; // the previous node's cell: the first pairing's start
+
+  void nextNode() {
+    if (++epoch == 0) {
+      std::fill(stamp.begin(), stamp.end(), 0u);
+      epoch = 1;
+    }
+    candidates.clear();
+  }
+};
 
 NodePosition meshPositions(const Mesh& mesh, const std::vector<double>* displacement) {
   if (displacement == nullptr || displacement->empty()) {
@@ -193,139 +97,275 @@ NodePosition meshPositions(const Mesh& mesh, const std::vector<double>* displace
 
 std::array<double, 2> projectOnCell(const Mesh& mesh, const NodePosition& position, CellId cell,
                                     const Point3& x) {
-  const CellType t = mesh.cellType(cell);
-  const int dim = info(t).dimension;
-  std::array<double, 2> xi =
-      isTriangle(t) ? std::array<double, 2>{1.0 / 3.0, 1.0 / 3.0} : std::array<double, 2>{0.0, 0.0};
-  for (int it = 0; it < 50; ++it) {
-    const auto g = evaluate(mesh, position, cell, xi);
-    const Point3 r = g.x - x;
-    if (dim == 1) {
-      const double h = dot(g.d1, g.d1);
-      const double step = -dot(g.d1, r) / h;
-      xi[0] += step;
-      if (std::abs(step) < 1e-12) {
-        break;
-      }
-    } else {
-      const double a = dot(g.d1, g.d1);
-      const double b = dot(g.d1, g.d2);
-      const double c = dot(g.d2, g.d2);
-      const double r1 = -dot(g.d1, r);
-      const double r2 = -dot(g.d2, r);
-      const double det = a * c - b * b;
-      const double s1 = (c * r1 - b * r2) / det;
-      const double s2 = (a * r2 - b * r1) / det;
-      xi[0] += s1;
-      xi[1] += s2;
-      if (std::abs(s1) + std::abs(s2) < 1e-12) {
-        break;
-      }
-    }
-    // Keep far-off iterates bounded (a degenerate start must not diverge).
-    xi[0] = std::clamp(xi[0], -10.0, 10.0);
-    xi[1] = std::clamp(xi[1], -10.0, 10.0);
+  CellNodes cn;
+  cn.type = mesh.cellType(cell);
+  const auto nodes = mesh.cellNodes(cell);
+  cn.count = static_cast<int>(nodes.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    cn.x[i] = position(nodes[i]);
   }
-  return xi;
+  return projectPoint(cn, info(cn.type).dimension, x);
 }
 
-std::vector<ContactLink> pairZone(const Mesh& mesh, const NodePosition& position, int zoneIndex,
-                                  const ContactZone& zone, const PairingOptions& options) {
+ZonePairing::ZonePairing(const Mesh& mesh, int zoneIndex, const ContactZone& zone,
+                         const PairingOptions& options)
+    : mesh_(&mesh), zoneIndex_(zoneIndex), zone_(zone), options_(options), dim_(options.dimension - 1) {
   if (zone.projection == Projection::Fixed) {
     throw UserError(
         Diagnostic::fatal("CONTACT_10", "TYPE_PROJECTION='FIXE' is not implemented yet", zone.location)
             .withNote("use TYPE_PROJECTION='ORTHOGONALE' (the default)"));
   }
-  const int dim = options.dimension - 1;
-  const Surface master = buildSurface(mesh, position, zoneMasterCells(mesh, zone), dim);
-  const auto* slaveCells = mesh.cellGroup(zone.slaveGroup);
-  const Surface slave = buildSurface(mesh, position, slaveCells ? *slaveCells : std::vector<CellId>{}, dim);
-  std::vector<Point3> masterPoints;
-  masterPoints.reserve(master.nodes.size());
-  for (NodeId n : master.nodes) {
-    masterPoints.push_back(position(n));
+  slaves_ = zoneSlaveNodes(mesh, zone);
+  master_ = std::make_unique<MasterSurface>(mesh, zoneMasterCells(mesh, zone), dim_);
+  slaveNormalNeeded_ = zone.normal != NormalChoice::Master || zone.pairing == Pairing::Nodal;
+  if (slaveNormalNeeded_) {
+    const auto* cells = mesh.cellGroup(zone.slaveGroup);
+    slave_ = std::make_unique<MasterSurface>(mesh, cells ? *cells : std::vector<CellId>{}, dim_);
+    slaveLocal_.reserve(slaves_.size());
+    for (NodeId s : slaves_) {
+      slaveLocal_.push_back(slave_->local(s));
+    }
   }
-  const PointSearchTree tree(std::move(masterPoints));
-  const bool slaveNormalNeeded = zone.normal != NormalChoice::Master || zone.pairing == Pairing::Nodal;
+  links_.resize(slaves_.size());
+  previous_.assign(slaves_.size(), -1);
+}
 
-  std::vector<ContactLink> links;
-  for (NodeId s : zoneSlaveNodes(mesh, zone)) {
-    ContactLink link;
-    link.zone = zoneIndex;
-    link.slave = s;
-    const Point3 x = position(s);
-    Point3 slaveNormal{0, 0, 0};
-    if (slaveNormalNeeded) {
-      slaveNormal = slave.nodalNormal.count(s) ? slave.nodalNormal.at(s) : Point3{0, 0, 0};
-      slaveNormal = chosenVector(zone.slaveVector, zone.slaveVectorValue, slaveNormal,
-                                 Point3{-slaveNormal[1], slaveNormal[0], 0});
-    }
-    if (tree.empty()) {
-      links.push_back(link);
-      continue;
-    }
-    Point3 masterNormal{0, 0, 0};
-    Point3 d1{0, 0, 0};
-    if (zone.pairing == Pairing::Nodal) {
-      const NodeId m = searchNodes(tree, master.nodes, x, 1).front();
-      link.masterNodes = {m};
-      link.weights = {1.0};
-      link.projection = position(m);
-      masterNormal = -1.0 * slaveNormal;
-      d1 = Point3{-masterNormal[1], masterNormal[0], 0.0};
-      link.paired = true;
-    } else {
-      Candidate best;
-      for (int k : {4, 16}) {
-        for (NodeId m : searchNodes(tree, master.nodes, x, k)) {
-          for (CellId c : master.cellsOfNode.at(m)) {
-            const auto xi = projectOnCell(mesh, position, c, x);
-            std::array<double, 2> clamped{};
-            const double out = outsideDistance(mesh.cellType(c), dim, xi, clamped);
-            if (zone.extensionTolerance >= 0.0 && out > zone.extensionTolerance) {
-              continue;
-            }
-            const double d = norm(evaluate(mesh, position, c, clamped).x - x);
-            if (d < best.distance) {
-              best = {c, clamped, d};
-            }
-          }
-        }
-        if (best.cell >= 0) {
-          break;
-        }
-      }
-      if (best.cell < 0) {
-        links.push_back(link);
-        continue;
-      }
-      const auto g = evaluate(mesh, position, best.cell, best.xi);
-      link.masterCell = best.cell;
-      link.xi = best.xi;
-      const auto nodes = mesh.cellNodes(best.cell);
-      link.masterNodes.assign(nodes.begin(), nodes.end());
-      link.weights.assign(g.n.data(), g.n.data() + g.n.size());
-      link.projection = g.x;
-      d1 = g.d1;
-      masterNormal = options.smoothing ? smoothedNormal(master, mesh, best.cell, g.n) : cellNormalAt(g, dim);
-      masterNormal = chosenVector(zone.masterVector, zone.masterVectorValue, masterNormal, g.d1);
-      link.paired = true;
-    }
-    Point3 n = masterNormal;
-    if (zone.normal == NormalChoice::Slave) {
-      n = -1.0 * slaveNormal;
-    } else if (zone.normal == NormalChoice::MasterSlave) {
-      n = normalized(masterNormal - slaveNormal);
-    }
-    link.normal = n;
-    tangents(n, d1, dim, link.tangent1, link.tangent2);
-    link.gap = dot(x - link.projection, n);
-    if (zone.pairingDistance > 0.0 && norm(x - link.projection) > zone.pairingDistance) {
-      link.paired = false;
-    }
-    links.push_back(std::move(link));
+ZonePairing::~ZonePairing() = default;
+ZonePairing::ZonePairing(ZonePairing&&) noexcept = default;
+ZonePairing& ZonePairing::operator=(ZonePairing&&) noexcept = default;
+
+const std::vector<ContactLink>& ZonePairing::pair(const NodePosition& position) {
+  const bool indexed = !options_.exhaustive && zone_.pairing != Pairing::Nodal;
+  master_->update(position, indexed || zone_.pairing == Pairing::Nodal, 0.0, options_.smoothing);
+  if (slave_) {
+    slave_->update(position, false, 0.0, true);
   }
-  return links;
+  tieTolerance_ = 1e-12 * master_->lengthScale();
+  const std::size_t n = slaves_.size();
+  // Chunks of at least 4096 nodes: below, starting threads costs more than it saves.
+  const std::size_t threads = std::max<std::size_t>(
+      1, std::min<std::size_t>(static_cast<std::size_t>(std::max(options_.threads, 1)), n / 4096));
+  scratch_.resize(threads);
+  for (Scratch& s : scratch_) {
+    if (s.stamp.size() != static_cast<std::size_t>(master_->cellCount())) {
+      s.stamp.assign(static_cast<std::size_t>(master_->cellCount()), 0u);
+      s.epoch = 0;
+    }
+    s.searched = 0;
+  }
+  if (threads == 1) {
+    pairRange(position, 0, n, scratch_[0]);
+  } else {
+    std::vector<std::thread> workers;
+    workers.reserve(threads - 1);
+    for (std::size_t t = 1; t < threads; ++t) {
+      workers.emplace_back([this, &position, n, t, threads] {
+        pairRange(position, n * t / threads, n * (t + 1) / threads, scratch_[t]);
+      });
+    }
+    pairRange(position, 0, n / threads, scratch_[0]);
+    for (auto& w : workers) {
+      w.join();
+    }
+  }
+  searched_ = 0;
+  for (const Scratch& s : scratch_) {
+    searched_ += s.searched;
+  }
+  first_ = false;
+  return links_;
+}
+
+void ZonePairing::pairRange(const NodePosition& position, std::size_t begin, std::size_t end,
+                            Scratch& scratch) {
+  for (std::size_t i = begin; i < end; ++i) {
+    pairNode(position, i, scratch);
+  }
+}
+
+int ZonePairing::findCell(const Point3& x, int previous, Scratch& s) const {
+  const MasterSurface& m = *master_;
+  s.nextNode();
+  CellNodes cn;
+  auto tryCell = [&](int c) {
+    auto& stamp = s.stamp[static_cast<std::size_t>(c)];
+    if (stamp == s.epoch) {
+      return;
+    }
+    stamp = s.epoch;
+    m.gather(c, cn);
+    s.candidates.push_back(projectionCandidate(cn, c, dim_, x, zone_.extensionTolerance));
+  };
+  // The cells of the R-tree's cube whose boxes are within `within` of x (Euclidean).
+  auto tryAround = [&](double within) {
+    m.index().queryAround(x, within, s.found);
+    for (int c : s.found) {
+      if (squaredDistance(m.box(c), x) <= within * within) {
+        tryCell(c);
+      }
+    }
+  };
+  auto select = [&] {
+    return selectCandidate(s.candidates.data(), s.candidates.data() + s.candidates.size(), tieTolerance_);
+  };
+  if (options_.exhaustive) {
+    for (int c = 0; c < m.cellCount(); ++c) {
+      tryCell(c);
+    }
+    return select();
+  }
+  // 1. The previous cell (the node's last pairing, or the previous node's cell the first time),
+  // 2. its neighbours, 3. growing balls in the R-tree until one holds an admissible projection.
+  double d = unbounded;
+  double covered = -1.0; // every cell whose box is within this distance was tried
+  if (previous >= 0) {
+    tryCell(previous);
+    d = smallestAdmissible(s.candidates);
+    if (d == unbounded) {
+      for (int c : m.neighbours(previous)) {
+        tryCell(c);
+      }
+      d = smallestAdmissible(s.candidates);
+    }
+  }
+  if (d == unbounded) {
+    ++s.searched;
+    double r = m.meanCellSize() > 0.0 ? m.meanCellSize() : 1e-3 * m.lengthScale();
+    for (;;) {
+      tryAround(r);
+      covered = r;
+      d = smallestAdmissible(s.candidates);
+      if (d < unbounded || s.found.size() == static_cast<std::size_t>(m.cellCount())) {
+        break;
+      }
+      r *= 2.0;
+    }
+    if (d == unbounded) {
+      return -1;
+    }
+  }
+  // The certificate: a cell offering a projection within d (+ ties) has its box within d.
+  const double reach = d + tieTolerance_;
+  if (reach > covered) {
+    tryAround(reach);
+  }
+  return select();
+}
+
+NodeId ZonePairing::findNode(const Point3& x, Scratch& s) const {
+  const MasterSurface& m = *master_;
+  double best = unbounded;
+  int bestLocal = -1;
+  auto visit = [&] {
+    for (int c : s.found) {
+      for (int l : m.cellNodes(c)) {
+        const double d = norm(m.position(l) - x);
+        if (d < best || (d == best && m.node(l) < m.node(bestLocal))) {
+          best = d;
+          bestLocal = l;
+        }
+      }
+    }
+  };
+  double r = m.meanCellSize() > 0.0 ? m.meanCellSize() : 1e-3 * m.lengthScale();
+  for (;;) {
+    m.index().queryAround(x, r, s.found);
+    visit();
+    if (bestLocal >= 0) {
+      break;
+    }
+    r *= 2.0;
+  }
+  if (best > r) {
+    m.index().queryAround(x, best, s.found);
+    visit();
+  }
+  return m.node(bestLocal);
+}
+
+void ZonePairing::pairNode(const NodePosition& position, std::size_t i, Scratch& scratch) {
+  ContactLink& link = links_[i];
+  link.zone = zoneIndex_;
+  link.slave = slaves_[i];
+  link.paired = false;
+  link.masterCell = -1;
+  link.xi = {0, 0};
+  link.masterNodes.clear();
+  link.weights.clear();
+  link.normal = link.tangent1 = link.tangent2 = link.projection = Point3{0, 0, 0};
+  link.gap = 0.0;
+  const Point3 x = position(link.slave);
+  Point3 slaveNormal{0, 0, 0};
+  if (slaveNormalNeeded_) {
+    const int l = slaveLocal_[i];
+    slaveNormal = l >= 0 ? slave_->nodalNormal(l) : Point3{0, 0, 0};
+    slaveNormal = chosenVector(zone_.slaveVector, zone_.slaveVectorValue, slaveNormal,
+                               Point3{-slaveNormal[1], slaveNormal[0], 0});
+  }
+  if (master_->cellCount() == 0) {
+    return;
+  }
+  Point3 masterNormal{0, 0, 0};
+  Point3 d1{0, 0, 0};
+  if (zone_.pairing == Pairing::Nodal) {
+    const NodeId m = findNode(x, scratch);
+    link.masterNodes.assign(1, m);
+    link.weights.assign(1, 1.0);
+    link.projection = master_->position(master_->local(m));
+    masterNormal = -1.0 * slaveNormal;
+    d1 = Point3{-masterNormal[1], masterNormal[0], 0.0};
+    link.paired = true;
+  } else {
+    const int best = findCell(x, first_ ? scratch.lastCell : previous_[i], scratch);
+    scratch.lastCell = best >= 0 ? scratch.candidates[static_cast<std::size_t>(best)].cell : scratch.lastCell;
+    if (best < 0) {
+      previous_[i] = -1;
+      return;
+    }
+    const Candidate& c = scratch.candidates[static_cast<std::size_t>(best)];
+    CellNodes cn;
+    master_->gather(c.cell, cn);
+    CellPoint g;
+    evaluateCell(cn, c.xi, g);
+    previous_[i] = c.cell;
+    link.masterCell = master_->cell(c.cell);
+    link.xi = c.xi;
+    const auto nodes = mesh_->cellNodes(link.masterCell);
+    link.masterNodes.assign(nodes.begin(), nodes.end());
+    link.weights.assign(g.shape.n.begin(), g.shape.n.begin() + cn.count);
+    link.projection = g.x;
+    d1 = g.d1;
+    if (options_.smoothing) {
+      const auto locals = master_->cellNodes(c.cell);
+      for (std::size_t k = 0; k < locals.size(); ++k) {
+        masterNormal = masterNormal + g.shape.n[k] * master_->nodalNormal(locals[k]);
+      }
+      masterNormal = normalized(masterNormal);
+    } else {
+      masterNormal = cellNormalAt(g, dim_);
+    }
+    masterNormal = chosenVector(zone_.masterVector, zone_.masterVectorValue, masterNormal, g.d1);
+    link.paired = true;
+  }
+  Point3 n = masterNormal;
+  if (zone_.normal == NormalChoice::Slave) {
+    n = -1.0 * slaveNormal;
+  } else if (zone_.normal == NormalChoice::MasterSlave) {
+    n = normalized(masterNormal - slaveNormal);
+  }
+  link.normal = n;
+  tangents(n, d1, dim_, link.tangent1, link.tangent2);
+  link.gap = dot(x - link.projection, n);
+  if (zone_.pairingDistance > 0.0 && norm(x - link.projection) > zone_.pairingDistance) {
+    link.paired = false;
+  }
+}
+
+std::vector<ContactLink> pairZone(const Mesh& mesh, const NodePosition& position, int zoneIndex,
+                                  const ContactZone& zone, const PairingOptions& options) {
+  ZonePairing pairing(mesh, zoneIndex, zone, options);
+  pairing.pair(position);
+  return pairing.links();
 }
 
 std::vector<ContactLink> pairAll(const ContactDefinition& definition, const NodePosition& position) {

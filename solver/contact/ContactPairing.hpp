@@ -3,10 +3,13 @@
 // master surface, giving the contact link the discrete algorithms constrain.
 //   MAIT_ESCL  orthogonal projection of the slave node on the master cells (SEG2/SEG3 in 2D and
 //              axisymmetric models, TRIA3/TRIA6/QUAD4/QUAD8/QUAD9 in 3D): Newton (Gauss-Newton)
-//              on the parametric coordinates, on the cells around the nearest master nodes found
-//              with a kd-tree; a projection outside its cell by more than TOLE_PROJ_EXT
-//              (parametric distance) is refused, a smaller one is brought back onto the cell.
-//   NODAL      the nearest master node, along the slave normal.
+//              on the parametric coordinates; a projection outside its cell by more than
+//              TOLE_PROJ_EXT (parametric distance) is refused, a smaller one is brought back onto
+//              the cell. The node pairs with the nearest admissible projection over ALL master
+//              cells (ties: CellProjection.hpp selectCandidate), found exactly with the R-tree of
+//              MasterCellIndex.hpp: balls around the node grow until one holds an admissible
+//              projection at distance d, then every cell whose box is within d is tried.
+//   NODAL      the nearest master node, along the slave normal (ties: the smallest node id).
 // DIST_APPA (> 0) refuses pairs farther apart. Normals: NORMALE MAIT (master outward normal),
 // ESCL (opposite of the slave outward normal), MAIT_ESCL (their mean); VECT_MAIT/VECT_ESCL FIXE
 // (given vector) or VECT_Y (given vector made orthogonal to the cell); LISSAGE: nodal normals
@@ -17,6 +20,7 @@
 #include "solver/contact/ContactDefinition.hpp"
 
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace stella::contact {
@@ -40,8 +44,59 @@ struct ContactLink {
 };
 
 struct PairingOptions {
-  int dimension = 3;      // of the mesh (2: SEG master cells)
-  bool smoothing = false; // LISSAGE
+  int dimension = 3;       // of the mesh (2: SEG master cells)
+  bool smoothing = false;  // LISSAGE
+  int threads = 1;         // slave nodes paired in this many chunks at once
+  bool exhaustive = false; // every master cell a candidate, no index (the brute-force reference)
+};
+
+class MasterSurface;
+
+// The pairing of one zone kept across the geometric loop: the surfaces' topology is built once;
+// each pair() reads the current positions, rebuilds the master cells' index and pairs every
+// slave node, starting after the first call from its previous master cell and that cell's
+// neighbours (the cells sharing a node with it): when one of them holds an admissible
+// projection at distance d, only the cells whose boxes lie within d are tried besides (one box
+// query, usually giving back the same few cells); otherwise the node is searched as the first
+// time. The result equals the pairing from scratch (tested). The links are rewritten in place:
+// after the first call nothing is allocated per node (master cells of one type).
+class ZonePairing {
+public:
+  ZonePairing(const Mesh& mesh, int zoneIndex, const ContactZone& zone, const PairingOptions& options);
+  ~ZonePairing();
+  ZonePairing(ZonePairing&&) noexcept;
+  ZonePairing& operator=(ZonePairing&&) noexcept;
+
+  const std::vector<ContactLink>& pair(const NodePosition& position);
+  const std::vector<ContactLink>& links() const { return links_; }
+  // Slave nodes of the last pairing not held by their previous cell or its neighbours (searched
+  // in the R-tree by growing balls; every node the first time).
+  long searchedNodes() const { return searched_; }
+
+private:
+  struct Scratch;
+  void pairRange(const NodePosition& position, std::size_t begin, std::size_t end, Scratch& scratch);
+  void pairNode(const NodePosition& position, std::size_t i, Scratch& scratch);
+  int findCell(const Point3& x, int previous, Scratch& scratch) const;
+  NodeId findNode(const Point3& x, Scratch& scratch) const;
+  void writeLink(std::size_t i, int best, const Scratch& scratch, const Point3& x, const Point3& slaveNormal);
+
+  const Mesh* mesh_ = nullptr;
+  int zoneIndex_ = 0;
+  ContactZone zone_;
+  PairingOptions options_;
+  int dim_ = 2;
+  std::vector<NodeId> slaves_;
+  std::unique_ptr<MasterSurface> master_;
+  std::unique_ptr<MasterSurface> slave_; // nodal normals of the slave surface, when needed
+  std::vector<int> slaveLocal_;          // local number of each slave node on slave_
+  std::vector<ContactLink> links_;
+  std::vector<int> previous_; // master cell position of each slave node's last pairing (-1)
+  std::vector<Scratch> scratch_;
+  double tieTolerance_ = 0.0;
+  long searched_ = 0;
+  bool slaveNormalNeeded_ = false;
+  bool first_ = true;
 };
 
 // Pairs every slave node of the zone (minus SANS_GROUP_NO / SANS_GROUP_MA). Links keep the

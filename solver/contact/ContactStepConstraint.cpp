@@ -154,7 +154,7 @@ std::optional<FailurePolicy> interpenetrationPolicy(const KeywordTree& kw) {
 } // namespace
 
 std::unique_ptr<StepConstraint> makeContactConstraint(const KeywordTree& statNonLine,
-                                                      MechanicalSystem& system) {
+                                                      MechanicalSystem& system, int threads) {
   if (!statNonLine.has("CONTACT")) {
     return nullptr;
   }
@@ -202,6 +202,7 @@ std::unique_ptr<StepConstraint> makeContactConstraint(const KeywordTree& statNon
     }
     c = std::make_unique<contact::DualContactConstraint>(def, system.dofs(), *algorithm);
   }
+  c->setPairingThreads(threads);
   c->initialize();
   return c;
 }

@@ -14,8 +14,9 @@ class MechanicalSystem;
 struct SourceLocation;
 
 // Null when the command has no CONTACT keyword: nothing of contact is built. Throws UserError for
-// a definition on another model or mesh and for what is not implemented yet (named).
+// a definition on another model or mesh and for what is not implemented yet (named). `threads`
+// (P ncpus) pair the slave nodes in that many chunks at once.
 std::unique_ptr<StepConstraint> makeContactConstraint(const KeywordTree& statNonLine,
-                                                      MechanicalSystem& system);
+                                                      MechanicalSystem& system, int threads = 1);
 
 } // namespace stella

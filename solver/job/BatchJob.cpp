@@ -413,6 +413,7 @@ JobResult runInWork(const JobSpec& spec, const RunOptions& options, const fs::pa
   SessionOptions sessionOptions;
   sessionOptions.referenceOnly = options.referenceOnly;
   sessionOptions.workDirectory = work;
+  sessionOptions.cpus = spec.cpus;
   // The steps of a failed command go beside the message file, where the user looks first.
   const auto messDestination = spec.results.find(6);
   sessionOptions.keptResultsDirectory =
@@ -553,6 +554,23 @@ double memoryLimitOf(const Export& study) {
   return mebibytes;
 }
 
+// P ncpus <n>: the threads a command may use (the contact pairing's slave-node chunks).
+int cpusOf(const Export& study) {
+  if (!study.hasParameter("ncpus")) {
+    return 1;
+  }
+  const std::vector<std::string> words = study.parameter("ncpus");
+  char* end = nullptr;
+  const long n = words.size() == 1 ? std::strtol(words.front().c_str(), &end, 10) : -1;
+  if (words.size() != 1 || end == words.front().c_str() || *end != '\0' || n < 1 || n > 1024) {
+    throw UserError(
+        Diagnostic::fatal("EXPORT_10", "P ncpus expects one whole number of threads from 1 to 1024, got '" +
+                                           fmt::format("{}", fmt::join(words, " ")) + "'")
+            .withNote(study.file.string() + ": write e.g. P ncpus 2"));
+  }
+  return static_cast<int>(n);
+}
+
 } // namespace
 
 JobResult runExport(const Export& study, const RunOptions& options) {
@@ -580,6 +598,7 @@ JobResult runExport(const Export& study, const RunOptions& options) {
   spec.stem = study.file.stem().string();
   spec.timeLimit = timeLimitOf(study);
   spec.memoryLimit = memoryLimitOf(study);
+  spec.cpus = cpusOf(study);
   spec.isTestcase = study.hasParameter("testlist");
   spec.expectedDiagnostics = study.parameter("expected_diag");
   return runSpec(spec, options);

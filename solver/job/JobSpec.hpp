@@ -32,6 +32,7 @@ struct JobSpec {
   std::string stem;                      // of the export or command file: <stem>.<RESULT>.incomplete.rmed
   unsigned timeLimit = 0;                // P time_limit, seconds (0: none)
   double memoryLimit = 0.0;              // P memory_limit, MiB (0: none)
+  int cpus = 1;                          // P ncpus
 };
 
 // The run in the work directory `work` (made by makeWorkDirectory).

@@ -169,7 +169,8 @@ Value runStatNonLine(OperatorCall& call) {
   NewtonDriver driver(system, settings, tables);
   const std::unique_ptr<DofMonitor> monitor = DofMonitor::read(kw, system); // SUIVI_DDL
   driver.setIterationColumns(monitor.get());
-  const std::unique_ptr<StepConstraint> constraint = makeContactConstraint(kw, system);
+  const std::unique_ptr<StepConstraint> constraint =
+      makeContactConstraint(kw, system, call.session.options().cpus);
   if (constraint != nullptr) {
     constraint->setDiagnosticSink(&call.session); // its alarms count in the job diagnostic
   }

@@ -35,6 +35,8 @@ struct SessionOptions {
   // <keptResultsDirectory>/<keptResultsStem>.<RESULT>.incomplete.rmed (empty: not written).
   std::filesystem::path keptResultsDirectory;
   std::string keptResultsStem;
+  // P ncpus of the export: the threads a command may use (today the contact pairing's).
+  int cpus = 1;
 };
 
 // A file the run writes on its own (the steps of a failed command): in the work directory, and

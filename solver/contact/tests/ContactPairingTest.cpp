@@ -1,8 +1,7 @@
 // Pairing: projections, weights, normals and gaps against hand-computed geometry (flat, slanted
-// and curved quadratic master cells), TOLE_PROJ_EXT, DIST_APPA, NODAL, LISSAGE, the kd-tree.
+// and curved quadratic master cells), TOLE_PROJ_EXT, DIST_APPA, NODAL, LISSAGE.
 
 #include "solver/contact/ContactPairing.hpp"
-#include "solver/contact/PointSearchTree.hpp"
 #include "solver/contact/tests/ContactTestMeshes.hpp"
 #include "solver/fem/ReferenceElement.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
@@ -231,33 +230,6 @@ TEST(ContactPairing, SmoothedNormalsInterpolateNodalAverages) {
   expected = (1.0 / norm(expected)) * expected;
   EXPECT_NEAR(smooth[0].normal[0], expected[0], 1e-12);
   EXPECT_NEAR(smooth[0].normal[1], expected[1], 1e-12);
-}
-
-TEST(ContactPairing, KdTreeMatchesBruteForce) {
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  std::vector<Point3> pts(2000);
-  for (auto& p : pts) {
-    p = {u(rng), u(rng), 0.1 * u(rng)};
-  }
-  const PointSearchTree tree(pts);
-  for (int q = 0; q < 200; ++q) {
-    const Point3 x{u(rng), u(rng), u(rng)};
-    int best = 0;
-    for (std::size_t i = 1; i < pts.size(); ++i) {
-      if (norm(pts[i] - x) < norm(pts[static_cast<std::size_t>(best)] - x)) {
-        best = static_cast<int>(i);
-      }
-    }
-    EXPECT_EQ(tree.nearest(x), best);
-    const auto five = tree.nearest(x, 5);
-    ASSERT_EQ(five.size(), 5u);
-    EXPECT_EQ(five[0], best);
-    for (std::size_t k = 1; k < 5; ++k) {
-      EXPECT_LE(norm(pts[static_cast<std::size_t>(five[k - 1])] - x),
-                norm(pts[static_cast<std::size_t>(five[k])] - x));
-    }
-  }
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 // The .export reader: the lines code_aster users write, and clear errors naming the line.
 
 #include "solver/job/Export.hpp"
+#include "solver/job/BatchJob.hpp"
 
 #include "interpreter/Diagnostics.hpp"
 
@@ -75,6 +76,19 @@ TEST_F(ExportTest, MalformedFileLines) {
   EXPECT_EQ(errorOf("F comm study.comm D 1\nF mmed m.med D twenty\n").first, "EXPORT_4");
   EXPECT_EQ(errorOf("F comm study.comm D 1\nF mmed m.med D 6\n").first, "EXPORT_5");
   EXPECT_EQ(errorOf("P ncpus 1\n").first, "EXPORT_8");
+}
+
+TEST_F(ExportTest, NcpusIsAWholeNumberOfThreads) {
+  for (const char* bad : {"0", "two", "2.5", "1 2"}) {
+    RunOptions options;
+    options.echo = false;
+    try {
+      runExport(Export::read(write(std::string("P ncpus ") + bad + "\nF comm study.comm D 1\n")), options);
+      ADD_FAILURE() << "P ncpus " << bad << " accepted";
+    } catch (const UserError& e) {
+      EXPECT_EQ(e.first().id, "EXPORT_10") << bad;
+    }
+  }
 }
 
 TEST_F(ExportTest, MissingDataFileIsNotAnErrorAtRead) {

@@ -1,14 +1,14 @@
 // Static kd-tree over points: median splits on the axis of largest spread, nearest-neighbour
 // queries by branch-and-bound.
 
-#include "solver/contact/PointSearchTree.hpp"
+#include "tools/bench/contact/PointSearchTree.hpp"
 
 #include <algorithm>
 #include <limits>
 #include <numeric>
 #include <queue>
 
-namespace stella::contact {
+namespace stella::contact::legacy {
 
 namespace {
 
@@ -113,4 +113,4 @@ int PointSearchTree::nearest(const Point3& x) const {
   return nearest(x, 1).front();
 }
 
-} // namespace stella::contact
+} // namespace stella::contact::legacy

@@ -7,7 +7,7 @@
 
 #include <vector>
 
-namespace stella::contact {
+namespace stella::contact::legacy {
 
 class PointSearchTree {
 public:
@@ -26,4 +26,4 @@ private:
   std::vector<signed char> axis_;
 };
 
-} // namespace stella::contact
+} // namespace stella::contact::legacy
