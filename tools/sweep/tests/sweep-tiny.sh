@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# The tiny sweep of ctest (sweep.tiny): 2 meshes x 2 modelisations of the Lame ring, one of which
+# does not exist. Checks the table's columns, the errors against hand-computed ones, that the
+# failing runs are rows (not the end of the sweep), --report, and a parameter no file assigns.
+set -euo pipefail
+stella=$1
+tiny=$2
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+"$stella" sweep "$tiny/tiny.sweep" --output-dir "$out" --no-plot 2>"$out/progress.txt" ||
+  fail "the sweep ended with $? (failed runs must not end it)"
+grep -q "sweep: 6/6 runs" "$out/progress.txt" || fail "no final progress line: $(cat "$out/progress.txt")"
+
+/usr/bin/python3 - "$out" <<'PY'
+import csv, os, sys
+out = sys.argv[1]
+rows = list(csv.DictReader(open(os.path.join(out, "sweep.csv"))))
+header = open(os.path.join(out, "sweep.csv")).readline().strip().split(",")
+expected = ["run", "series", "label", "MODEL", "UNIT", "mesh_size", "status", "finished", "repeats",
+            "wall_s", "cpu_s", "peak_mem_mb", "steps", "newton_iter", "contact_iter", "geom_iter",
+            "snl_numbering_s", "snl_assembly_s", "snl_factorisation_s", "snl_solve_s", "snl_post_s",
+            "snl_other_s", "snl_total_s", "error", "error_of", "err:u_r(a)", "err:u_r(b)", "files", "pareto"]
+def check(ok, what):
+    if not ok:
+        sys.exit("FAIL: " + what)
+check(header == expected, "columns %s" % header)
+check(len(rows) == 4, "%d rows, expected 4" % len(rows))
+check([r["label"] for r in rows] == ["QUAD8 MODEL=D_PLAN", "QUAD8 MODEL=D_PLAM", "TRIA3 MODEL=D_PLAN",
+                                     "TRIA3 MODEL=D_PLAM"], "labels")
+# Hand-computed errors, from the values these meshes give (testcases/lame_cylinder/lame.comm's
+# VALE_CALC): |u - u_ref| / |u_ref| with u_ref(a) = 9.533333333333335e-4, u_ref(b) = 6.066666666666668e-4.
+hand = {0: (abs(0.000953314478122818 - 9.533333333333335e-4) / 9.533333333333335e-4,
+            abs(0.0006066582851718222 - 6.066666666666668e-4) / 6.066666666666668e-4),
+        2: (abs(0.0009559833521780194 - 9.533333333333335e-4) / 9.533333333333335e-4,
+            abs(0.000605293948834362 - 6.066666666666668e-4) / 6.066666666666668e-4)}
+for i, (ea, eb) in hand.items():
+    r = rows[i]
+    check(r["status"] == "OK" and r["finished"] == "yes" and r["repeats"] == "2", "row %d: %s" % (i, r))
+    check(abs(float(r["err:u_r(a)"]) - ea) <= 1e-4 * ea, "row %d err u_r(a) %s, hand %g" % (i, r["err:u_r(a)"], ea))
+    check(abs(float(r["err:u_r(b)"]) - eb) <= 1e-4 * eb, "row %d err u_r(b) %s, hand %g" % (i, r["err:u_r(b)"], eb))
+    check(r["error"] == r["err:u_r(a)"] and r["error_of"] == "u_r(a)", "row %d: the error shown" % i)
+    check(float(r["wall_s"]) > 0 and float(r["cpu_s"]) > 0 and float(r["peak_mem_mb"]) > 1, "row %d: measures" % i)
+    check(r["files"] == "", "row %d: the files of a good run are removed" % i)
+for i in (1, 3):
+    r = rows[i]
+    check(r["status"] == "<F>_SYNTAX_ERROR" and r["finished"] == "no", "row %d: %s" % (i, r))
+    check(r["repeats"] == "1", "row %d: a failed run is not repeated" % i)
+    check(r["error"] == "" and r["pareto"] == "", "row %d: a failed run has no error, is off the front" % i)
+    check(os.path.exists(os.path.join(out, r["files"], "r1", "lame.mess")), "row %d: its message file is kept" % i)
+# QUAD8 has the smallest error: nothing can beat it, it is on the front whatever the timings.
+check(rows[0]["pareto"] == "yes", "the most accurate run is on the Pareto front")
+PY
+grep -q "error 1.97782e-05: \*\*QUAD8 MODEL=D_PLAN\*\*" "$out/sweep.md" || fail "the front in words: $(cat "$out/sweep.md")"
+
+# --report: the tables (and the figure, with matplotlib) again from sweep.csv, without running.
+cp "$out/sweep.csv" "$out/before.csv"
+rm "$out/sweep.md"
+rm -rf "$out/runs"
+if /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
+  "$stella" sweep --report "$out" 2>/dev/null || fail "--report ended with $?"
+  test -s "$out/sweep.png" || fail "--report drew no figure"
+else
+  echo "note: no matplotlib for /usr/bin/python3: --report checked with --no-plot"
+  "$stella" sweep --report "$out" --no-plot 2>/dev/null || fail "--report ended with $?"
+fi
+cmp -s "$out/sweep.csv" "$out/before.csv" || fail "--report changed the CSV"
+grep -q "^| 1 | QUAD8 MODEL=D_PLAN | OK |" "$out/sweep.md" || fail "--report: no table in sweep.md"
+test ! -e "$out/runs" || fail "--report ran the study again"
+
+# A parameter no command file assigns is refused before any run, naming it (exit 65).
+set +e
+msg=$("$stella" sweep "$tiny/tiny.sweep" --vary 'NU=0.2,0.3' --output-dir "$out/bad" 2>&1)
+code=$?
+set -e
+test "$code" = 65 || fail "a parameter nobody assigns: exit $code, expected 65: $msg"
+grep -q "parameter NU is set (0.2) but no command file assigns it" <<<"$msg" || fail "message: $msg"
+test ! -e "$out/bad/runs/001/r1/lame.mess" || fail "a run started despite the bad parameter"
+echo "sweep.tiny: OK"
