@@ -17,25 +17,12 @@ double median(std::vector<double> values) {
 
 namespace {
 
-const std::vector<std::string> measureColumns{"status",
-                                              "finished",
-                                              "repeats",
-                                              "wall_s",
-                                              "cpu_s",
-                                              "peak_mem_mb",
-                                              "steps",
-                                              "newton_iter",
-                                              "contact_iter",
-                                              "geom_iter",
-                                              "snl_numbering_s",
-                                              "snl_assembly_s",
-                                              "snl_factorisation_s",
-                                              "snl_solve_s",
-                                              "snl_post_s",
-                                              "snl_other_s",
-                                              "snl_total_s",
-                                              "error",
-                                              "error_of"};
+const std::vector<std::string> measureColumns{
+    "status",       "finished",   "repeats",         "wall_s",         "cpu_s",
+    "time_s",       "time_of",    "peak_mem_mb",     "steps",          "newton_iter",
+    "contact_iter", "geom_iter",  "snl_numbering_s", "snl_assembly_s", "snl_factorisation_s",
+    "snl_solve_s",  "snl_post_s", "snl_other_s",     "snl_total_s",    "error",
+    "error_of"};
 
 std::string seconds(double s) {
   return formatNumber(s, 4);
@@ -52,7 +39,7 @@ template <class F> double medianOf(const std::vector<Repeat>& repeats, F of) {
   return median(values);
 }
 
-void fillMeasures(Table& t, std::size_t row, const Point& p) {
+void fillMeasures(Table& t, std::size_t row, const Point& p, const std::string& time) {
   if (!p.meshFailure.empty() || p.repeats.empty()) {
     t.set(row, "status", p.meshFailure.empty() ? "NOT_RUN" : p.meshFailure);
     t.set(row, "finished", "no");
@@ -66,6 +53,8 @@ void fillMeasures(Table& t, std::size_t row, const Point& p) {
   t.set(row, "repeats", std::to_string(p.repeats.size()));
   t.set(row, "wall_s", seconds(medianOf(p.repeats, [](const Repeat& r) { return r.child.wallSeconds; })));
   t.set(row, "cpu_s", seconds(medianOf(p.repeats, [](const Repeat& r) { return r.child.cpuSeconds; })));
+  t.set(row, "time_s", t.at(row, time == "cpu" ? "cpu_s" : "wall_s"));
+  t.set(row, "time_of", time);
   t.set(row, "peak_mem_mb",
         formatNumber(medianOf(p.repeats, [](const Repeat& r) { return r.child.peakMemoryMiB; }), 4));
   t.set(row, "steps", std::to_string(m.steps));
@@ -128,7 +117,7 @@ Table buildTable(const SweepSpec& spec, const std::vector<Point>& points,
         t.set(row, "mesh_size", value);
       }
     }
-    fillMeasures(t, row, p);
+    fillMeasures(t, row, p, spec.time);
     fillErrors(t, row, p, spec.error);
   }
   // err:* columns came in first-seen order; the run folder (kept for failed runs) and the front last.

@@ -112,6 +112,7 @@ fs::path Sweep::meshFor(const RunPoint& point, std::set<std::string>& used, std:
                         ("mesh_" + std::to_string(meshes_.size() + 1) + entry->path.extension().string());
   const std::string command = substituteBraces(spec_.meshCommand, point.settings, file.string(), used);
   const fs::path folder = spec_.file.empty() ? spec_.study.parent_path() : spec_.file.parent_path();
+  fs::create_directories(file.parent_path());
   const fs::path log = file.string() + ".log";
   writeText(file.string() + ".command", command + "\n");
   const ChildOutcome made = runChild({"/bin/sh", "-c", command}, folder, log, spec_.timeout);

@@ -12,7 +12,8 @@ namespace stella::sweep {
 
 namespace {
 
-const char* const knownKeys = "study, comm, repeats, timeout, error, mesh, mesh_unit, mesh_size, series";
+const char* const knownKeys =
+    "study, comm, repeats, timeout, time, error, mesh, mesh_unit, mesh_size, series";
 
 [[noreturn]] void fail(const SweepSpec& spec, int line, const std::string& what) {
   std::string where = spec.file.empty() ? std::string("--vary") : spec.file.string();
@@ -82,6 +83,11 @@ void setKey(SweepSpec& spec, int line, const Setting& kv) {
     spec.repeats = positiveInteger(spec, line, key, value);
   } else if (key == "timeout") {
     spec.timeout = positiveInteger(spec, line, key, value);
+  } else if (key == "time") {
+    if (value != "wall" && value != "cpu") {
+      fail(spec, line, "time is wall or cpu, got '" + value + "'");
+    }
+    spec.time = value;
   } else if (key == "error") {
     spec.error = value;
   } else if (key == "mesh") {

@@ -42,6 +42,7 @@ struct SweepSpec {
   int meshUnit = 0;            // the export's unit the generated mesh replaces
   std::string meshSize;        // the parameter that is the mesh size (x of the second panel)
   std::string seriesParameter; // without [series]: the parameter whose value names the series
+  std::string time = "wall";   // the time of the figure and the front: wall or cpu
   std::vector<Parameter> vary;
   std::vector<Series> series;
 };

@@ -92,13 +92,18 @@ std::string markdownCell(const std::string& s) {
 
 } // namespace
 
+// The time of the front: the column time_s (wall or CPU, as the sweep file says), else wall_s.
+static std::string timeColumn(const Table& table) {
+  return table.column("time_s") >= 0 ? "time_s" : "wall_s";
+}
+
 std::vector<std::size_t> markParetoFront(Table& table) {
   const std::size_t n = table.rows.size();
   std::vector<double> time(n, 0.0);
   std::vector<double> error(n, 0.0);
   std::vector<bool> eligible(n, false);
   for (std::size_t i = 0; i < n; ++i) {
-    eligible[i] = table.at(i, "finished") == "yes" && number(table.at(i, "wall_s"), time[i]) &&
+    eligible[i] = table.at(i, "finished") == "yes" && number(table.at(i, timeColumn(table)), time[i]) &&
                   number(table.at(i, "error"), error[i]);
   }
   const auto front = paretoFront(time, error, eligible);
@@ -203,14 +208,16 @@ std::string toMarkdown(const Table& table, const std::vector<std::size_t>& front
     out += "\n";
   }
   const std::string of = table.rows.empty() ? std::string() : table.at(0, "error_of");
+  const std::string timeOf = table.rows.empty() ? std::string() : table.at(0, "time_of");
   out += "\nPareto front (error" + (of.empty() ? std::string() : " of `" + of + "`") +
-         " against the median wall time; no run is both faster and more accurate than these):\n\n";
+         " against the median " + (timeOf == "cpu" ? "CPU" : "wall") +
+         " time; no run is both faster and more accurate than these):\n\n";
   if (front.empty()) {
     out += "- none: no run finished with a reference test.\n";
   }
   for (const std::size_t i : front) {
     out += "- error " + table.at(i, "error") + ": **" + table.at(i, "label") + "**, " +
-           table.at(i, "wall_s") + " s\n";
+           table.at(i, timeColumn(table)) + " s\n";
   }
   return out;
 }

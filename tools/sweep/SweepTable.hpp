@@ -22,7 +22,8 @@ struct Table {
 std::vector<std::size_t> paretoFront(const std::vector<double>& time, const std::vector<double>& error,
                                      const std::vector<bool>& eligible);
 
-// Fills the column `pareto` ("yes" or "") from `wall_s`, `error` and `finished`; returns the front.
+// Fills the column `pareto` ("yes" or "") from `time_s` (or `wall_s`), `error` and `finished`;
+// returns the front.
 std::vector<std::size_t> markParetoFront(Table& table);
 
 std::string toCsv(const Table& table);

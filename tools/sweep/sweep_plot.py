@@ -3,7 +3,7 @@
 
 Usage: sweep_plot.py sweep.csv sweep.png
 
-Left: the error (column `error`) against the median wall time, log-log, one series per value of
+Left: the error (column `error`) against the median time (column `time_s`: wall or CPU), log-log, one series per value of
 the column `series`, the Pareto front (column `pareto`, computed by stella) drawn as a staircase
 and its points named. Right: the error against the mesh size (column `mesh_size`) with the
 observed order of each series (least-squares slope of log error on log size).
@@ -45,7 +45,7 @@ def main(csv_path, png_path):
     with open(csv_path, newline="") as f:
         rows = list(csv.DictReader(f))
     done = [r for r in rows if r.get("finished") == "yes" and number(r.get("error")) is not None
-            and number(r.get("wall_s")) is not None]
+            and number(r.get("time_s")) is not None]
     failed = [r for r in rows if r.get("finished") != "yes"]
     series = []
     for r in done:
@@ -56,8 +56,8 @@ def main(csv_path, png_path):
     markers = "osD^v<>pP*hX"
     for k, name in enumerate(series):
         mine = [r for r in done if r["series"] == name]
-        mine.sort(key=lambda r: (number(r.get("mesh_size")) or 0.0, number(r["wall_s"])))
-        t = [number(r["wall_s"]) for r in mine]
+        mine.sort(key=lambda r: (number(r.get("mesh_size")) or 0.0, number(r["time_s"])))
+        t = [number(r["time_s"]) for r in mine]
         e = [max(number(r["error"]), FLOOR) for r in mine]
         left.plot(t, e, marker=markers[k % len(markers)], linestyle="-", label=name, alpha=0.8)
         sizes = [number(r.get("mesh_size")) for r in mine]
@@ -65,16 +65,17 @@ def main(csv_path, png_path):
             order = observed_order(sizes, e)
             label = name if order is None else "%s (order %.2f)" % (name, order)
             right.plot(sizes, e, marker=markers[k % len(markers)], linestyle="-", label=label, alpha=0.8)
-    front = sorted((r for r in done if r.get("pareto") == "yes"), key=lambda r: number(r["wall_s"]))
+    front = sorted((r for r in done if r.get("pareto") == "yes"), key=lambda r: number(r["time_s"]))
     if front:
-        t = [number(r["wall_s"]) for r in front]
+        t = [number(r["time_s"]) for r in front]
         e = [max(number(r["error"]), FLOOR) for r in front]
         left.step(t, e, where="post", color="black", linewidth=2.2, alpha=0.35, label="Pareto front")
         for r, x, y in zip(front, t, e):
             left.annotate(r["label"], (x, y), textcoords="offset points", xytext=(6, 4), fontsize=7)
     left.set_xscale("log")
     left.set_yscale("log")
-    left.set_xlabel("wall time of the run (s, median)")
+    time_of = done[0].get("time_of", "wall") if done else "wall"
+    left.set_xlabel("%s time of the run (s, median)" % ("CPU" if time_of == "cpu" else "wall"))
     left.set_ylabel("relative error" + (" of " + of if of else ""))
     title = "error against time"
     if failed:

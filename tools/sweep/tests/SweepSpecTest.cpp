@@ -66,9 +66,10 @@ TEST(SweepSpec, SplitsOutsideQuotesAndBrackets) {
 }
 
 TEST(SweepSpec, RefusesBadLinesWithTheirLocation) {
-  EXPECT_EQ(errorOf("study = a.export\nrepeat = 3\n"),
-            "/s/study.sweep:2: unknown key 'repeat' (known: study, comm, repeats, timeout, error, mesh, "
-            "mesh_unit, mesh_size, series; parameters go under [vary])");
+  EXPECT_EQ(
+      errorOf("study = a.export\nrepeat = 3\n"),
+      "/s/study.sweep:2: unknown key 'repeat' (known: study, comm, repeats, timeout, time, error, mesh, "
+      "mesh_unit, mesh_size, series; parameters go under [vary])");
   EXPECT_EQ(errorOf("study = a.export\nrepeats = 0\n"),
             "/s/study.sweep:2: repeats expects a positive integer, got '0'");
   EXPECT_EQ(errorOf("study = a.export\n[vary]\nN = 1,\n"),
@@ -77,6 +78,7 @@ TEST(SweepSpec, RefusesBadLinesWithTheirLocation) {
             "/s/study.sweep:4: parameter N is already varied at line 3");
   EXPECT_EQ(errorOf("study = a.export\n[series]\nGCP ALGO = 1\n"),
             "/s/study.sweep:3: a series is 'NAME: PARAMETER = value; ...', got 'GCP ALGO = 1'");
+  EXPECT_EQ(errorOf("study = a.export\ntime = user\n"), "/s/study.sweep:2: time is wall or cpu, got 'user'");
   EXPECT_EQ(errorOf("[grid]\n"), "/s/study.sweep:1: unknown section '[grid]' (sections: [vary], [series])");
   EXPECT_EQ(errorOf("repeats = 3\n"),
             "/s/study.sweep: no 'study = <file>.export' line: the sweep needs the study it varies");

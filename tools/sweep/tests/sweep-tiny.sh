@@ -19,7 +19,7 @@ out = sys.argv[1]
 rows = list(csv.DictReader(open(os.path.join(out, "sweep.csv"))))
 header = open(os.path.join(out, "sweep.csv")).readline().strip().split(",")
 expected = ["run", "series", "label", "MODEL", "UNIT", "mesh_size", "status", "finished", "repeats",
-            "wall_s", "cpu_s", "peak_mem_mb", "steps", "newton_iter", "contact_iter", "geom_iter",
+            "wall_s", "cpu_s", "time_s", "time_of", "peak_mem_mb", "steps", "newton_iter", "contact_iter", "geom_iter",
             "snl_numbering_s", "snl_assembly_s", "snl_factorisation_s", "snl_solve_s", "snl_post_s",
             "snl_other_s", "snl_total_s", "error", "error_of", "err:u_r(a)", "err:u_r(b)", "files", "pareto"]
 def check(ok, what):
