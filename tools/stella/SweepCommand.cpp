@@ -100,7 +100,17 @@ bool writeReport(Table& table, const fs::path& dir, const std::string& preamble,
 int report(const SweepArguments& args) {
   const fs::path dir = args.report;
   Table table = fromCsv(readText(dir / "sweep.csv"));
-  const std::string preamble = "Regenerated from `sweep.csv` by `stella sweep --report`.\n";
+  // The words before the table (the command and the machine's load) stay those of the sweep.
+  const std::string note = "Tables and figure redrawn from `sweep.csv` by `stella sweep --report`.\n";
+  std::string preamble = note;
+  if (fs::exists(dir / "sweep.md")) {
+    const std::string before = readText(dir / "sweep.md");
+    const auto start = before.find("\n| run |");
+    if (start != std::string::npos) {
+      preamble = before.substr(0, start);
+      preamble += preamble.find(note) == std::string::npos ? "\n" + note : std::string();
+    }
+  }
   return writeReport(table, dir, preamble, !args.noPlot) ? 0 : 3;
 }
 

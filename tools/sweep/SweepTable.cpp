@@ -207,17 +207,28 @@ std::string toMarkdown(const Table& table, const std::vector<std::size_t>& front
     }
     out += "\n";
   }
-  const std::string of = table.rows.empty() ? std::string() : table.at(0, "error_of");
+  // The test the error is of: one for the whole table, or each run's largest.
+  std::string of;
+  bool oneTest = true;
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    const std::string name = table.at(r, "error_of");
+    oneTest = oneTest && (name.empty() || of.empty() || name == of);
+    of = name.empty() ? of : name;
+  }
+  of = oneTest ? of : std::string();
   const std::string timeOf = table.rows.empty() ? std::string() : table.at(0, "time_of");
-  out += "\nPareto front (error" + (of.empty() ? std::string() : " of `" + of + "`") +
-         " against the median " + (timeOf == "cpu" ? "CPU" : "wall") +
-         " time; no run is both faster and more accurate than these):\n\n";
+  out +=
+      "\nPareto front (" +
+      (oneTest ? "error" + (of.empty() ? std::string() : " of `" + of + "`") : "largest error of each run") +
+      " against the median " + (timeOf == "cpu" ? "CPU" : "wall") +
+      " time; no run is both faster and more accurate than these):\n\n";
   if (front.empty()) {
     out += "- none: no run finished with a reference test.\n";
   }
   for (const std::size_t i : front) {
-    out += "- error " + table.at(i, "error") + ": **" + table.at(i, "label") + "**, " +
-           table.at(i, timeColumn(table)) + " s\n";
+    out += "- error " + table.at(i, "error") +
+           (oneTest ? std::string() : " (" + table.at(i, "error_of") + ")") + ": **" + table.at(i, "label") +
+           "**, " + table.at(i, timeColumn(table)) + " s\n";
   }
   return out;
 }

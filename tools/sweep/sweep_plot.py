@@ -51,7 +51,8 @@ def main(csv_path, png_path):
     for r in done:
         if r["series"] not in series:
             series.append(r["series"])
-    of = done[0].get("error_of", "") if done else ""
+    names = {r.get("error_of", "") for r in done}
+    of = names.pop() if len(names) == 1 else ""  # several: the largest error of each run
     fig, (left, right) = plt.subplots(1, 2, figsize=(13, 5.5))
     markers = "osD^v<>pP*hX"
     for k, name in enumerate(series):
@@ -70,13 +71,14 @@ def main(csv_path, png_path):
         t = [number(r["time_s"]) for r in front]
         e = [max(number(r["error"]), FLOOR) for r in front]
         left.step(t, e, where="post", color="black", linewidth=2.2, alpha=0.35, label="Pareto front")
-        for r, x, y in zip(front, t, e):
-            left.annotate(r["label"], (x, y), textcoords="offset points", xytext=(6, 4), fontsize=7)
+        for k, (r, x, y) in enumerate(zip(front, t, e)):  # alternate sides: neighbours stay readable
+            left.annotate(r["label"], (x, y), textcoords="offset points", xytext=(6, 4 if k % 2 == 0 else -11),
+                          fontsize=7)
     left.set_xscale("log")
     left.set_yscale("log")
     time_of = done[0].get("time_of", "wall") if done else "wall"
     left.set_xlabel("%s time of the run (s, median)" % ("CPU" if time_of == "cpu" else "wall"))
-    left.set_ylabel("relative error" + (" of " + of if of else ""))
+    left.set_ylabel("relative error of " + of if of else "largest relative error of the run's tests")
     title = "error against time"
     if failed:
         title += " (%d run(s) failed: see the table)" % len(failed)

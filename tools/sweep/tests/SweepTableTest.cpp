@@ -93,6 +93,17 @@ TEST(SweepTable, MarksTheFrontFromTheColumns) {
   EXPECT_NE(md.find("- error 0.1: **a**, 1 s\n- error 0.01: **d**, 3 s\n"), std::string::npos) << md;
 }
 
+TEST(SweepTable, NamesEachTestWhenTheErrorsAreOfSeveral) {
+  Table t{{"label", "finished", "wall_s", "error", "error_of"},
+          {{"a", "yes", "1", "0.1", "u_r(a)"}, {"b", "yes", "2", "0.01", "u_r(b)"}}};
+  const auto front = markParetoFront(t);
+  const std::string md = toMarkdown(t, front);
+  EXPECT_NE(md.find("Pareto front (largest error of each run against"), std::string::npos) << md;
+  EXPECT_NE(md.find("- error 0.1 (u_r(a)): **a**, 1 s\n- error 0.01 (u_r(b)): **b**, 2 s\n"),
+            std::string::npos)
+      << md;
+}
+
 TEST(SweepTable, CsvRoundTripsQuotesAndCommas) {
   Table t{{"label", "ALGO"}, {{"GCP, fine", "{'ALGO_CONT': \"GCP\"}"}, {"plain", ""}}};
   const std::string csv = toCsv(t);

@@ -67,6 +67,13 @@ else
 fi
 cmp -s "$out/sweep.csv" "$out/before.csv" || fail "--report changed the CSV"
 grep -q "^| 1 | QUAD8 MODEL=D_PLAN | OK |" "$out/sweep.md" || fail "--report: no table in sweep.md"
+grep -q "^Tables and figure redrawn from" "$out/sweep.md" || fail "--report: no note in sweep.md"
+# A second --report keeps the words before the table (the command, the load) of the first.
+echo "Written by a sweep on a machine with a load of 1.0." >"$out/sweep.md.new"
+sed -n '/^| run |/,$p' "$out/sweep.md" >>"$out/sweep.md.new"
+mv "$out/sweep.md.new" "$out/sweep.md"
+"$stella" sweep --report "$out" --no-plot 2>/dev/null || fail "--report ended with $?"
+test "$(head -1 "$out/sweep.md")" = "Written by a sweep on a machine with a load of 1.0." || fail "--report lost the preamble"
 test ! -e "$out/runs" || fail "--report ran the study again"
 
 # A parameter no command file assigns is refused before any run, naming it (exit 65).
