@@ -134,7 +134,8 @@ int main(int argc, char** argv) {
                                             "(doc/sweep.md)");
   sweep->add_option("sweep", sweepArgs.target, "the sweep file, or a .export with --vary")
       ->check(CLI::ExistingFile);
-  sweep->add_option("--vary", sweepArgs.vary, "NAME=v1,v2,...: a parameter and its values (repeatable)");
+  sweep->add_option("--vary", sweepArgs.vary, "NAME=v1,v2,...: a parameter and its values (repeatable)")
+      ->allow_extra_args(false);
   sweep->add_option("-j,--jobs", sweepArgs.jobs, "runs at the same time (default 1)")
       ->check(CLI::Range(1, 256));
   sweep->add_option("--repeats", sweepArgs.repeats, "runs of each point, the median shown (default 3)")

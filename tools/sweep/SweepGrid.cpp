@@ -66,13 +66,15 @@ std::vector<RunPoint> expandGrid(const SweepSpec& spec) {
       RunPoint point;
       point.index = static_cast<int>(points.size()) + 1;
       point.series = spec.seriesParameter.empty() ? s.name : unquoted(valueOf(chosen, spec.seriesParameter));
-      label = point.series;
+      // Without series, the label is the values alone ("N=8", not "study N=8").
+      const bool namedSeries = !spec.series.empty() || !spec.seriesParameter.empty();
+      label = namedSeries ? point.series : std::string();
       for (const auto& p : spec.vary) {
         if (p.name != spec.seriesParameter) {
-          label += " " + p.name + "=" + unquoted(valueOf(chosen, p.name));
+          label += (label.empty() ? "" : " ") + p.name + "=" + unquoted(valueOf(chosen, p.name));
         }
       }
-      point.label = label;
+      point.label = label.empty() ? point.series : label;
       for (const auto& c : columns) {
         point.settings.emplace_back(c, valueOf(chosen, c));
       }

@@ -67,6 +67,13 @@ std::string exportText(const Export& study, const std::vector<fs::path>& comms, 
   return out;
 }
 
+// "0.42", "3.1", "220": seconds as a person reads them on a progress line.
+std::string roundSeconds(double s) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, s >= 10.0 ? "%.0f" : "%.2g", s);
+  return buffer;
+}
+
 class Sweep {
 public:
   Sweep(const SweepSpec& spec, const RunnerOptions& options)
@@ -202,7 +209,7 @@ void Sweep::progress(std::size_t done, std::size_t total, const std::string& las
   const double left =
       done == 0 ? 0.0 : elapsed / static_cast<double>(done) * static_cast<double>(total - done);
   std::string line = "sweep: " + std::to_string(done) + "/" + std::to_string(total) + " runs, elapsed " +
-                     formatNumber(elapsed, 3) + " s, about " + formatNumber(left, 2) + " s left; " + last;
+                     roundSeconds(elapsed) + " s, about " + roundSeconds(left) + " s left; " + last;
   *options_.progress << (options_.terminal ? "\r\033[K" : "") << line << (options_.terminal ? "" : "\n")
                      << std::flush;
 }

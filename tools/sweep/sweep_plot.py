@@ -16,6 +16,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 
 FLOOR = 1e-16  # an error of exactly 0 is drawn here (log axes)
 
@@ -26,6 +27,17 @@ def number(text):
     except (TypeError, ValueError):
         return None
     return value if math.isfinite(value) else None
+
+
+def plain_ticks(axis):
+    """Log-axis labels as plain numbers (0.5, 20); on less than a decade the minor ticks carry them."""
+    low, high = axis.get_view_interval()
+    formatter = matplotlib.ticker.FuncFormatter(lambda v, _: "%g" % v)
+    axis.set_major_formatter(formatter)
+    if low > 0 and high / low < 10:
+        axis.set_minor_formatter(formatter)
+    else:
+        axis.set_minor_formatter(matplotlib.ticker.NullFormatter())
 
 
 def observed_order(sizes, errors):
@@ -84,6 +96,7 @@ def main(csv_path, png_path):
         title += " (%d run(s) failed: see the table)" % len(failed)
     left.set_title(title)
     left.grid(True, which="both", alpha=0.3)
+    plain_ticks(left.xaxis)
     if series:
         left.legend(fontsize=7)
     if right.lines:
@@ -93,6 +106,7 @@ def main(csv_path, png_path):
         right.set_ylabel("relative error")
         right.set_title("error against mesh size (observed order)")
         right.grid(True, which="both", alpha=0.3)
+        plain_ticks(right.xaxis)
         right.legend(fontsize=7)
     else:
         right.axis("off")

@@ -129,6 +129,15 @@ TEST(SweepGrid, SeriesParameterNamesTheSeries) {
   EXPECT_EQ(points[1].label, "CONTRAINTE N=4");
 }
 
+TEST(SweepGrid, WithoutSeriesTheLabelIsTheValues) {
+  SweepSpec s = parseSweepFile("study = a.export\n", "/s/x.sweep");
+  addVary(s, "N=4,8");
+  const auto points = expandGrid(s);
+  ASSERT_EQ(points.size(), 2u);
+  EXPECT_EQ(points[1].series, "study");
+  EXPECT_EQ(points[1].label, "N=8");
+}
+
 TEST(SweepGrid, SubstitutesTopLevelAssignmentsOnly) {
   const std::string comm = "N = 4\nNN = 7\nE_N=1.0  # comment\n  N = 5\nif N == 4:\n    pass\n";
   std::set<std::string> used;
