@@ -89,9 +89,11 @@ std::string substituteAssignments(const std::string& text, const std::vector<Set
   std::istringstream in(text);
   std::string line;
   std::string out;
+  bool parameters = true; // the lines before DEBUT() (or POURSUITE()): past it, a name is a concept's
   while (std::getline(in, line)) {
+    parameters = parameters && line.rfind("DEBUT(", 0) != 0 && line.rfind("POURSUITE(", 0) != 0;
     for (const auto& [name, value] : settings) {
-      if (value.empty() || line.compare(0, name.size(), name) != 0) {
+      if (!parameters || value.empty() || line.compare(0, name.size(), name) != 0) {
         continue;
       }
       const auto eq = line.find_first_not_of(" \t", name.size());

@@ -26,7 +26,8 @@ std::vector<std::string> parameterColumns(const SweepSpec& spec);
 std::vector<RunPoint> expandGrid(const SweepSpec& spec);
 
 // Replaces the value of each top-level one-line assignment `NAME = ...` of a command file (a line
-// starting with NAME) by the setting's value; the names replaced are added to `used`.
+// starting with NAME) before its DEBUT() (or POURSUITE()) line by the setting's value (after it, a
+// name is a concept's, `MESH = LIRE_MAILLAGE(...)`); the names replaced are added to `used`.
 std::string substituteAssignments(const std::string& text, const std::vector<Setting>& settings,
                                   std::set<std::string>& used);
 

@@ -120,6 +120,7 @@ fs::path Sweep::meshFor(const RunPoint& point, std::set<std::string>& used, std:
   const std::string command = substituteBraces(spec_.meshCommand, point.settings, file.string(), used);
   const fs::path folder = spec_.file.empty() ? spec_.study.parent_path() : spec_.file.parent_path();
   fs::create_directories(file.parent_path());
+  fs::remove(file); // a mesh of an earlier sweep in this folder is never taken for this one
   const fs::path log = file.string() + ".log";
   writeText(file.string() + ".command", command + "\n");
   const ChildOutcome made = runChild({"/bin/sh", "-c", command}, folder, log, spec_.timeout);
@@ -169,7 +170,7 @@ void Sweep::prepare() {
     for (const auto& [param, value] : grid.settings) {
       if (!value.empty() && used.count(param) == 0) {
         throw SweepError("parameter " + param + " is set (" + value +
-                         ") but no command file assigns it on a line of its own ('" + param +
+                         ") but no command file assigns it on a line of its own before DEBUT() ('" + param +
                          " = ...' at the start of a line) and the mesh command does not use {" + param + "}");
       }
     }

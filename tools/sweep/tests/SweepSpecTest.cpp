@@ -147,6 +147,17 @@ TEST(SweepGrid, SubstitutesTopLevelAssignmentsOnly) {
   EXPECT_EQ(used, (std::set<std::string>{"E_N", "N"}));
 }
 
+TEST(SweepGrid, SubstitutesOnlyBeforeDebut) {
+  // MESH after DEBUT() is a concept, not the parameter: a sweep must never replace it.
+  const std::string comm = "MESH = 'a.msh'\nDEBUT()\nMESH = LIRE_MAILLAGE(UNITE=20)\n";
+  std::set<std::string> used;
+  EXPECT_EQ(substituteAssignments(comm, {{"MESH", "'b.msh'"}}, used),
+            "MESH = 'b.msh'  # set by stella sweep\nDEBUT()\nMESH = LIRE_MAILLAGE(UNITE=20)\n");
+  used.clear();
+  EXPECT_EQ(substituteAssignments("DEBUT()\nN = 4\n", {{"N", "8"}}, used), "DEBUT()\nN = 4\n");
+  EXPECT_TRUE(used.empty());
+}
+
 TEST(SweepGrid, SubstitutesTheMeshCommand) {
   std::set<std::string> used;
   EXPECT_EQ(substituteBraces("gmsh a.geo -setnumber H {H} -o {mesh}", {{"H", "0.5"}}, "/m/1.msh", used),

@@ -82,6 +82,36 @@ msg=$("$stella" sweep "$tiny/tiny.sweep" --vary 'NU=0.2,0.3' --output-dir "$out/
 code=$?
 set -e
 test "$code" = 65 || fail "a parameter nobody assigns: exit $code, expected 65: $msg"
-grep -q "parameter NU is set (0.2) but no command file assigns it" <<<"$msg" || fail "message: $msg"
+grep -q "parameter NU is set (0.2) but no command file assigns it on a line of its own before DEBUT()" <<<"$msg" ||
+  fail "message: $msg"
+# MESH is assigned after DEBUT() only (a concept): a parameter of that name is refused the same way.
+set +e
+msg=$("$stella" sweep "$tiny/tiny.sweep" --vary "MESH='a','b'" --output-dir "$out/bad2" 2>&1)
+code=$?
+set -e
+test "$code" = 65 || fail "a parameter named as a concept after DEBUT(): exit $code: $msg"
 test ! -e "$out/bad/runs/001/r1/lame.mess" || fail "a run started despite the bad parameter"
+# The mesh command: run once per mesh in the sweep file's folder with {MESH} and {mesh} replaced;
+# a mesh that cannot be made is a row (MESH_FAILED), not the end of the sweep.
+"$stella" sweep "$tiny/mesh.sweep" --output-dir "$out/mesh" --no-plot 2>"$out/mesh.txt" ||
+  fail "the mesh sweep ended with $?: $(cat "$out/mesh.txt")"
+/usr/bin/python3 - "$out/mesh" <<'PY'
+import csv, os, sys
+out = sys.argv[1]
+rows = list(csv.DictReader(open(os.path.join(out, "sweep.csv"))))
+def check(ok, what):
+    if not ok:
+        sys.exit("FAIL: " + what)
+check([r["series"] for r in rows] == ["ring_tria3.msh", "ring_missing.msh"], "series named by MESH_FILE: %s" % rows)
+check(rows[0]["status"] == "OK", "the copied TRIA3 mesh runs: %s" % rows[0])
+# the TRIA3 ring's error (hand-computed above): the generated mesh replaced unit 20
+ea = abs(0.0009559833521780194 - 9.533333333333335e-4) / 9.533333333333335e-4
+check(abs(float(rows[0]["err:u_r(a)"]) - ea) <= 1e-4 * ea, "the mesh of unit 20 is the generated one")
+check(rows[1]["status"] == "MESH_FAILED" and rows[1]["finished"] == "no" and rows[1]["repeats"] == "0",
+      "a mesh command that fails: %s" % rows[1])
+cmd = open(os.path.join(out, "meshes", "mesh_1.msh.command")).read()
+check(cmd.startswith("cp ../../../../testcases/lame_cylinder/ring_tria3.msh ") and cmd.strip().endswith("mesh_1.msh"),
+      "the mesh command as run: " + cmd)
+PY
+grep -q "the mesh command failed" "$out/mesh.txt" || fail "the failed mesh is not reported: $(cat "$out/mesh.txt")"
 echo "sweep.tiny: OK"
