@@ -136,7 +136,15 @@ int sweep(const SweepArguments& args) {
              << spec.repeats << " repeat(s), median shown, -j " << args.jobs << "; "
              << std::thread::hardware_concurrency() << " cores, load average " << loadBefore << " before and "
              << loadAverage() << " after).\n";
-    return writeReport(table, options.outputDir, preamble.str(), !args.noPlot) ? 0 : 3;
+    if (sweepInterrupted()) {
+      preamble << "\n**Interrupted**: the runs not made are marked NOT_RUN.\n";
+    }
+    const bool drawn = writeReport(table, options.outputDir, preamble.str(), !args.noPlot);
+    if (sweepInterrupted()) {
+      std::cerr << "stella sweep: interrupted; the table holds the runs made\n";
+      return 6; // as `stella run`: <S>_INTERRUPTED
+    }
+    return drawn ? 0 : 3;
   } catch (const SweepError& e) {
     std::cerr << "stella sweep: " << e.what() << "\n";
     return exitInput;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -65,6 +66,13 @@ std::string exportText(const Export& study, const std::vector<fs::path>& comms, 
            std::to_string(e.unit) + "\n";
   }
   return out;
+}
+
+// Ctrl-C or SIGTERM: no new run starts; the runs under way end (on Ctrl-C they are interrupted
+// too, at their safe point) and the table holds what was done.
+volatile std::sig_atomic_t stopRequested = 0;
+extern "C" void requestStop(int) {
+  stopRequested = 1;
 }
 
 // "0.42", "3.1", "220": seconds as a person reads them on a progress line.
@@ -247,8 +255,15 @@ Table Sweep::run() {
   std::size_t done = 0;
   std::size_t next = 0;
   std::vector<std::pair<Task, std::unique_ptr<Child>>> active;
-  while (next < tasks.size() || !active.empty()) {
-    while (next < tasks.size() && static_cast<int>(active.size()) < std::max(1, options_.jobs)) {
+  bool told = false;
+  while ((next < tasks.size() && stopRequested == 0) || !active.empty()) {
+    if (stopRequested != 0 && !told && options_.progress != nullptr) {
+      *options_.progress << "\nsweep: interrupted: no new run; waiting for the " << active.size()
+                         << " run(s) under way, then writing the table\n";
+      told = true;
+    }
+    while (stopRequested == 0 && next < tasks.size() &&
+           static_cast<int>(active.size()) < std::max(1, options_.jobs)) {
       const std::size_t k = next++;
       if (skipped[k]) {
         continue;
@@ -297,7 +312,22 @@ Table Sweep::run() {
 Table runSweep(const SweepSpec& spec, const RunnerOptions& options) {
   fs::create_directories(options.outputDir / "runs");
   Sweep sweep(spec, options);
-  return sweep.run();
+  stopRequested = 0;
+  struct sigaction stop {};
+  stop.sa_handler = requestStop;
+  sigemptyset(&stop.sa_mask);
+  struct sigaction oldInt {};
+  struct sigaction oldTerm {};
+  sigaction(SIGINT, &stop, &oldInt);
+  sigaction(SIGTERM, &stop, &oldTerm);
+  Table table = sweep.run();
+  sigaction(SIGINT, &oldInt, nullptr);
+  sigaction(SIGTERM, &oldTerm, nullptr);
+  return table;
+}
+
+bool sweepInterrupted() {
+  return stopRequested != 0;
 }
 
 } // namespace stella::sweep

@@ -23,6 +23,9 @@ struct RunnerOptions {
 
 // Runs every point `spec.repeats` times (a point that fails is not repeated) and returns the
 // table of medians. Throws SweepError for a sweep that cannot start (bad parameter, mesh failure).
+// Ctrl-C or SIGTERM stop it: no new run starts, the runs under way end, the table holds what was
+// done (points not run: status NOT_RUN) and sweepInterrupted() is true.
 Table runSweep(const SweepSpec& spec, const RunnerOptions& options);
+bool sweepInterrupted();
 
 } // namespace stella::sweep

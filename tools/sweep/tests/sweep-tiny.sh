@@ -114,4 +114,24 @@ check(cmd.startswith("cp ../../../../testcases/lame_cylinder/ring_tria3.msh ") a
       "the mesh command as run: " + cmd)
 PY
 grep -q "the mesh command failed" "$out/mesh.txt" || fail "the failed mesh is not reported: $(cat "$out/mesh.txt")"
+# Interrupted (SIGINT to the sweep): no new run, the table of what was done, exit 6. 4 points x 20
+# repeats (the failing points are not repeated: 42 runs) take at least 2 s; the signal comes after
+# 1 s, and the run under way then ends normally (the signal went to the sweep only).
+"$stella" sweep "$tiny/tiny.sweep" --repeats 20 --output-dir "$out/stop" --no-plot 2>"$out/stop.txt" &
+pid=$!
+sleep 1
+kill -INT "$pid"
+set +e
+wait "$pid"
+code=$?
+set -e
+test "$code" = 6 || fail "an interrupted sweep: exit $code, expected 6: $(tail -3 "$out/stop.txt")"
+grep -q "sweep: interrupted: no new run" "$out/stop.txt" || fail "no word of the interruption"
+/usr/bin/python3 - "$out/stop" <<'PY'
+import csv, os, sys
+rows = list(csv.DictReader(open(os.path.join(sys.argv[1], "sweep.csv"))))
+if len(rows) != 4 or rows[-1]["status"] != "NOT_RUN" or rows[0]["status"] != "OK":
+    sys.exit("FAIL: the table of an interrupted sweep: %s" % [(r["label"], r["status"], r["repeats"]) for r in rows])
+PY
+grep -q "^\*\*Interrupted\*\*" "$out/stop/sweep.md" || fail "sweep.md does not say it was interrupted"
 echo "sweep.tiny: OK"
