@@ -236,40 +236,43 @@ Table Sweep::run() {
       tasks.push_back({p, r});
     }
   }
-  // A point whose mesh failed is not run; one whose first run failed is not repeated.
-  std::vector<bool> skipped(tasks.size(), false);
+  // A point whose mesh failed is not run; one whose first run failed is not repeated, and its
+  // other runs wait for the first (so that -j N does not start them beside it).
+  enum : char { pending, started, skipped };
+  std::vector<char> state(tasks.size(), pending);
   std::size_t total = tasks.size();
-  auto skipRest = [&](std::size_t point, std::size_t from) {
-    for (std::size_t j = from; j < tasks.size(); ++j) {
-      if (tasks[j].point == point && !skipped[j]) {
-        skipped[j] = true;
+  auto skipRest = [&](std::size_t point) {
+    for (std::size_t j = 0; j < tasks.size(); ++j) {
+      if (tasks[j].point == point && state[j] == pending) {
+        state[j] = skipped;
         --total;
       }
     }
   };
   for (std::size_t p = 0; p < points_.size(); ++p) {
     if (points_[p].failed()) {
-      skipRest(p, 0);
+      skipRest(p);
     }
   }
+  auto anyPending = [&] { return std::find(state.begin(), state.end(), pending) != state.end(); };
   std::size_t done = 0;
-  std::size_t next = 0;
   std::vector<std::pair<Task, std::unique_ptr<Child>>> active;
   bool told = false;
-  while ((next < tasks.size() && stopRequested == 0) || !active.empty()) {
+  while ((anyPending() && stopRequested == 0) || !active.empty()) {
     if (stopRequested != 0 && !told && options_.progress != nullptr) {
       *options_.progress << "\nsweep: interrupted: no new run; waiting for the " << active.size()
                          << " run(s) under way, then writing the table\n";
       told = true;
     }
-    while (stopRequested == 0 && next < tasks.size() &&
-           static_cast<int>(active.size()) < std::max(1, options_.jobs)) {
-      const std::size_t k = next++;
-      if (skipped[k]) {
-        continue;
-      }
+    for (std::size_t k = 0; k < tasks.size() && stopRequested == 0 &&
+                            static_cast<int>(active.size()) < std::max(1, options_.jobs);
+         ++k) {
       const Task t = tasks[k];
       const Point& point = points_[t.point];
+      if (state[k] != pending || (t.repeat > 0 && point.repeats.empty())) {
+        continue;
+      }
+      state[k] = started;
       const fs::path dir = point.directory / ("r" + std::to_string(t.repeat + 1));
       active.emplace_back(t, std::make_unique<Child>(command(point, t.repeat), fs::path(), dir / "stella.log",
                                                      spec_.timeout));
@@ -283,7 +286,7 @@ Table Sweep::run() {
       Repeat r = collect(point, it->first.repeat, it->second->outcome());
       ++done;
       if (!r.finished) {
-        skipRest(it->first.point, next);
+        skipRest(it->first.point);
       }
       progress(done, total,
                point.grid.label + " (" + std::to_string(it->first.repeat + 1) + "/" +

@@ -54,6 +54,18 @@ check(rows[0]["pareto"] == "yes", "the most accurate run is on the Pareto front"
 PY
 grep -q "error 1.97782e-05: \*\*QUAD8 MODEL=D_PLAN\*\*" "$out/sweep.md" || fail "the front in words: $(cat "$out/sweep.md")"
 
+# -j 2: two runs at a time give the same rows (statuses, repeats, errors) as one at a time.
+"$stella" sweep "$tiny/tiny.sweep" -j 2 --output-dir "$out/j2" --no-plot 2>/dev/null || fail "-j 2 ended with $?"
+/usr/bin/python3 - "$out" <<'PY'
+import csv, os, sys
+def rows(d):
+    keep = ("label", "status", "repeats", "error", "err:u_r(a)", "err:u_r(b)")
+    return [[r[k] for k in keep] for r in csv.DictReader(open(os.path.join(d, "sweep.csv")))]
+one, two = rows(sys.argv[1]), rows(os.path.join(sys.argv[1], "j2"))
+if one != two:
+    sys.exit("FAIL: -j 2 differs from -j 1:\n%s\n%s" % (one, two))
+PY
+
 # --report: the tables (and the figure, with matplotlib) again from sweep.csv, without running.
 cp "$out/sweep.csv" "$out/before.csv"
 rm "$out/sweep.md"
