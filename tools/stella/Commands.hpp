@@ -45,6 +45,20 @@ int catalog(const CatalogArguments& args);
 
 int convert(const std::string& in, const std::string& out);
 
+struct SweepArguments {
+  std::string target;            // a sweep file, or a .export with --vary
+  std::vector<std::string> vary; // "NAME=v1,v2"
+  std::string report;            // --report DIR: the figures again from DIR/sweep.csv
+  std::string outputDir;
+  std::string error; // the reference test the figure shows (its LEGENDE)
+  int jobs = 1;
+  int repeats = 0; // 0: the sweep file's (default 3)
+  bool keepRuns = false;
+  bool noPlot = false;
+  std::string commandLine;
+};
+int sweep(const SweepArguments& args);
+
 // Exit codes shared by every subcommand (documented in --help and the README).
 inline constexpr int exitUsage = 64;
 inline constexpr int exitInput = 65; // a file that cannot be read or is malformed

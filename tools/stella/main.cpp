@@ -27,6 +27,8 @@ Examples:
   stella catalog DEFI_CONTACT                 the keyword tree of a command
   stella catalog --list                       every command stella knows
   stella convert mesh.msh mesh.med            mesh conversion (Gmsh, ASTER, MED)
+  stella sweep study.sweep -j 2               error against time over a grid (doc/sweep.md)
+  stella sweep study.export --vary N=4,8,16   the same without a sweep file
 
 Exit codes of `stella run` (the job diagnostic at the end of the message file):
   0  OK or <A>_ALARM          1  NOOK_TEST_RESU or NO_TEST_RESU
@@ -45,7 +47,7 @@ std::string joinArguments(int argc, char** argv) {
 }
 
 // The subcommand names, for "did you mean" when the first argument is none of them.
-const std::vector<std::string> subcommands{"run", "check", "fmt", "catalog", "convert"};
+const std::vector<std::string> subcommands{"run", "check", "fmt", "catalog", "convert", "sweep"};
 
 // `stella chek ...`: CLI11 would only say that "chek" was not expected; name the nearest one.
 bool refusedUnknownSubcommand(int argc, char** argv) {
@@ -126,6 +128,25 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   convert->add_option("output", convertOut, "the mesh to write (.med, .mail, .msh)")->required();
 
+  stella::cli::SweepArguments sweepArgs;
+  sweepArgs.commandLine = runArgs.commandLine;
+  auto* sweep = app.add_subcommand("sweep", "Run a study over a grid of parameters: error against time "
+                                            "(doc/sweep.md)");
+  sweep->add_option("sweep", sweepArgs.target, "the sweep file, or a .export with --vary")
+      ->check(CLI::ExistingFile);
+  sweep->add_option("--vary", sweepArgs.vary, "NAME=v1,v2,...: a parameter and its values (repeatable)")
+      ->allow_extra_args(false);
+  sweep->add_option("-j,--jobs", sweepArgs.jobs, "runs at the same time (default 1)")
+      ->check(CLI::Range(1, 256));
+  sweep->add_option("--repeats", sweepArgs.repeats, "runs of each point, the median shown (default 3)")
+      ->check(CLI::PositiveNumber);
+  sweep->add_option("--output-dir", sweepArgs.outputDir, "where the tables go (default: <sweep>_sweep/)");
+  sweep->add_option("--error", sweepArgs.error, "the reference test (LEGENDE) the figure shows");
+  sweep->add_flag("--keep-runs", sweepArgs.keepRuns, "keep the files of the runs that ended well");
+  sweep->add_flag("--no-plot", sweepArgs.noPlot, "write the CSV and Markdown tables only");
+  sweep->add_option("--report", sweepArgs.report, "draw the figure and tables again from DIR/sweep.csv")
+      ->check(CLI::ExistingDirectory);
+
   // The last resort of the single error path: an exception that escaped every handler is a bug
   // in stella, reported as <F>_ABNORMAL_ABORT's exit code, never as a crash (134).
   std::set_terminate([] {
@@ -158,6 +179,13 @@ int main(int argc, char** argv) {
   }
   if (convert->parsed()) {
     return stella::cli::convert(convertIn, convertOut);
+  }
+  if (sweep->parsed()) {
+    if (sweepArgs.target.empty() == sweepArgs.report.empty()) {
+      std::cerr << "stella sweep: give a sweep file (or a .export with --vary), or --report DIR\n";
+      return stella::cli::exitUsage;
+    }
+    return stella::cli::sweep(sweepArgs);
   }
   return stella::cli::exitUsage;
 }
