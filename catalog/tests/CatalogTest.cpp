@@ -149,10 +149,12 @@ TEST(StatNonLine, InvalidCalls) {
   ASSERT_EQ(r->sink.ids(), std::vector<std::string>{"CATALOG_7"}) << r->sink.text();
   EXPECT_NE(r->sink.text().find("CHARGE expects char_meca or char_cine_meca; MAIL is a maillage"),
             std::string::npos);
-  // Missing INCREMENT; PRESENT_ABSENT broken in CONVERGENCE.
+  // Missing INCREMENT; PRESENT_ABSENT broken in CONVERGENCE; RESI_REFE_RELA and SIGM_REFE are not
+  // implemented yet (CATALOG_17): all four in one pass.
   r = run("RES = STAT_NON_LINE(MODELE=MO, CHAM_MATER=MAT, CONVERGENCE=_F(RESI_REFE_RELA=1.e-3, "
           "SIGM_REFE=1.0, RESI_GLOB_RELA=1.e-6))\n");
-  EXPECT_EQ(r->sink.ids(), (std::vector<std::string>{"CATALOG_5", "CATALOG_6"})) << r->sink.text();
+  EXPECT_EQ(r->sink.ids(), (std::vector<std::string>{"CATALOG_17", "CATALOG_17", "CATALOG_5", "CATALOG_6"}))
+      << r->sink.text();
   // Superelements are outside the scope.
   r = run("RES = STAT_NON_LINE(MODELE=MO, CHAM_MATER=MAT, INCREMENT=_F(LIST_INST=TIMES), "
           "SOUS_STRUC=_F(CAS_CHARGE='A', TOUT='OUI'))\n");

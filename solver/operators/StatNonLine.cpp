@@ -25,7 +25,6 @@
 #include "solver/nonlinear/ResultFields.hpp"
 #include "solver/nonlinear/ResultLoads.hpp"
 #include "solver/nonlinear/StatNonLineInputs.hpp"
-#include "solver/nonlinear/StatNonLineKeywords.hpp"
 #include "solver/nonlinear/StepMeasures.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
@@ -41,13 +40,7 @@ namespace {
 std::vector<std::string> relationsOf(const KeywordTree& kw, const Model& model) {
   std::vector<std::string> relations(model.cells.size(), "ELAS");
   for (const KeywordTree& occ : kw.occurrences("COMPORTEMENT")) {
-    const std::string deformation = occ.textOr("DEFORMATION", "PETIT");
-    if (deformation != "PETIT") {
-      throw UserError(Diagnostic::fatal("COMPOR_2",
-                                        fmt::format("DEFORMATION='{}' is not implemented yet", deformation),
-                                        occ.locationOf("DEFORMATION"))
-                          .withNote("available: DEFORMATION='PETIT' (small strains)"));
-    }
+    // DEFORMATION: the catalogue implements 'PETIT' only (implemente=).
     const std::string relation = occ.textOr("RELATION", "ELAS");
     for (CellId c : selectCells(*model.mesh, occ)) {
       relations[static_cast<std::size_t>(c)] = relation;
@@ -142,7 +135,6 @@ std::string effectsLine(const MechanicalSystem& system, const NewtonSettings& se
 
 Value runStatNonLine(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
-  refuseUnsupportedKeywords(kw);
   auto model = readModel(kw);
   auto materials = readMaterialField(kw, *model);
   const auto commandStart = std::chrono::steady_clock::now();

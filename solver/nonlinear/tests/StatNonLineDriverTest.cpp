@@ -357,7 +357,7 @@ FIN()
 )";
   auto run = runStudy("mixte", comm, kMesh);
   EXPECT_EQ(run->failure(), FailureKind::Error);
-  EXPECT_NE(run->mess().find("STAT_NON_LINE RECH_LINEAIRE METHODE='MIXTE' is not implemented yet"),
+  EXPECT_NE(run->mess().find("METHODE='MIXTE' in RECH_LINEAIRE of STAT_NON_LINE is not implemented yet"),
             std::string::npos)
       << run->mess();
 }
