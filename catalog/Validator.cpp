@@ -472,8 +472,7 @@ private:
     if (!why.empty()) {
       notes.insert(notes.begin(), why);
     }
-    notes.push_back("the catalogue marks it so (non_implemente=); `stella catalog " + command_.name +
-                    "` lists what is implemented");
+    notes.push_back("`stella catalog " + command_.name + "` shows what stella implements of it");
     Diagnostic d = Diagnostic::fatal("CATALOG_17", what + " is not implemented yet", at);
     for (auto& n : notes) {
       d.withNote(std::move(n));
@@ -630,7 +629,8 @@ private:
         if (v.isString()) {
           return v;
         }
-      } else if (v.isConcept() && (t == "assd" || types_.isA(v.asConcept()->type, t))) {
+      } else if (v.isConcept() && (t == "assd" || v.asConcept()->type == kUncheckedConceptType ||
+                                   types_.isA(v.asConcept()->type, t))) {
         return v;
       }
     }

@@ -67,11 +67,6 @@ double callRealFunction(const RealFunction& function, const std::string& name, c
 // Operators that read no file, write nothing and cost next to nothing: `stella check` runs them
 // too, so that FIN() ends the file, a FORMULE's expression is compiled (its errors point inside
 // the string) and functions and lists can be called or read later in the file.
-bool runsWhenChecking(const std::string& command) {
-  return command == "FIN" || command == "FORMULE" || command == "DEFI_FONCTION" ||
-         command == "DEFI_CONSTANTE" || command == "DEFI_LIST_REEL";
-}
-
 constexpr int frameWidth = 80;
 
 std::string frameLine(const std::string& text) {
@@ -227,7 +222,8 @@ void Session::noteFailure(FailureKind kind) {
   }
 }
 
-Value Session::callCommand(const std::string& command, const CallArguments& args, const std::string& target) {
+Value Session::callCommandOnce(const std::string& command, const CallArguments& args,
+                               const std::string& target) {
   ValidatedCall call;
   try {
     call = catalog_.validate(command, args);
@@ -246,7 +242,8 @@ Value Session::callCommand(const std::string& command, const CallArguments& args
     throw UserError(std::move(d));
   }
 
-  if (stopRequested() && (options_.executeOperators || runsWhenChecking(command))) {
+  const bool execute = options_.executeOperators || runsInCheck(command, call.keywords);
+  if (stopRequested() && execute) {
     throw UserError(stopDiagnostic("before " + command, args.callLocation));
   }
   try {
@@ -268,7 +265,7 @@ Value Session::callCommand(const std::string& command, const CallArguments& args
   Value result;
   auto wallStart = std::chrono::steady_clock::now();
   std::clock_t cpuStart = std::clock();
-  if (options_.executeOperators || runsWhenChecking(command)) {
+  if (execute) {
     const std::string resultName = call.reused ? call.reused->name : target;
     OperatorCall opCall{*this,           command,     call.keywords,    resultName,
                         call.resultType, call.reused, args.callLocation};
