@@ -80,6 +80,18 @@ TEST(CatalogSupport, ImplementedKeywordsPass) {
       refusals("SUIVI_DDL=_F(NOM_CHAM='DEPL', NOM_CMP='DX', TOUT='OUI', EVAL_CHAM='MAX'), INFO=1)").empty());
 }
 
+TEST(CatalogSupport, DefiListInstRefusalsAreCatalogueMarks) {
+  for (const char* call :
+       {"L = DEFI_LIST_INST(METHODE='AUTO', DEFI_LIST=_F(LIST_INST=L1))\n",
+        "L = DEFI_LIST_INST(DEFI_LIST=_F(LIST_INST=L1), ECHEC=_F(ACTION='ITER_SUPPL'))\n",
+        "L = DEFI_LIST_INST(DEFI_LIST=_F(LIST_INST=L1), ECHEC=_F(SUBD_METHODE='AUTO'))\n",
+        "L = DEFI_LIST_INST(DEFI_LIST=_F(LIST_INST=L1), ECHEC=_F(EVENEMENT='DIVE_RESI'))\n"}) {
+    auto r = run(call);
+    EXPECT_EQ(r->sink.ids(), std::vector<std::string>{"CATALOG_17"}) << call << r->sink.text();
+  }
+  EXPECT_TRUE(valid(*run("L = DEFI_LIST_INST(DEFI_LIST=_F(LIST_INST=L1), ECHEC=_F(ACTION='DECOUPE'))\n")));
+}
+
 // A command stella has no operator for is marked in its catalogue entry.
 TEST(CatalogSupport, DynaNonLineIsMarkedNotImplemented) {
   const CommandSpec* spec = Catalog::builtin().find("DYNA_NON_LINE");
