@@ -21,22 +21,24 @@ namespace {
   std::abort();
 }
 
+// Every keyword read here has a catalogue default in the branch that reads it: the validated tree
+// holds it, so no fallback repeats it (tools/lint/or-fallbacks.py).
 FailurePolicy readFailure(const KeywordTree& e) {
   FailurePolicy p;
-  const std::string event = e.textOr("EVENEMENT", "ERREUR");
-  const std::string action = e.textOr("ACTION", "DECOUPE");
+  const std::string event = e.text("EVENEMENT");
+  const std::string action = e.text("ACTION");
   if (event == "ERREUR") {
     p.event = FailurePolicy::Event::Error;
     if (action == "ARRET") {
       p.action = FailurePolicy::Action::Stop;
     } else if (action == "DECOUPE") {
       p.action = FailurePolicy::Action::Subdivide;
-      if (e.textOr("SUBD_METHODE", "MANUEL") != "MANUEL") {
+      if (e.text("SUBD_METHODE") != "MANUEL") {
         notImplemented("SUBD_METHODE='AUTO'");
       }
-      p.subdivisions = static_cast<int>(e.integerOr("SUBD_PAS", 4));
-      p.maxLevel = static_cast<int>(e.integerOr("SUBD_NIVEAU", 3));
-      p.minStep = e.realOr("SUBD_PAS_MINI", 0.0);
+      p.subdivisions = static_cast<int>(e.integer("SUBD_PAS"));
+      p.maxLevel = static_cast<int>(e.integer("SUBD_NIVEAU"));
+      p.minStep = e.real("SUBD_PAS_MINI");
     } else {
       notImplemented("ACTION='" + action + "'");
     }
@@ -44,7 +46,9 @@ FailurePolicy readFailure(const KeywordTree& e) {
     p.event = FailurePolicy::Event::Interpenetration;
     p.maxPenetration = e.real("PENE_MAXI");
     p.action = action == "ARRET" ? FailurePolicy::Action::Stop : FailurePolicy::Action::AdaptPenalty;
-    p.maxCoefficient = e.realOr("COEF_MAXI", 1.0e12);
+    if (p.action == FailurePolicy::Action::AdaptPenalty) {
+      p.maxCoefficient = e.real("COEF_MAXI"); // defined (with its default) for ADAPT_COEF_PENA only
+    }
   } else {
     notImplemented("EVENEMENT='" + event + "'");
   }
@@ -53,7 +57,7 @@ FailurePolicy readFailure(const KeywordTree& e) {
 
 Value runDefiListInst(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
-  if (kw.textOr("METHODE", "MANUEL") != "MANUEL") {
+  if (kw.text("METHODE") != "MANUEL") {
     notImplemented("METHODE='AUTO'");
   }
   auto list = std::make_shared<InstantList>();
