@@ -183,6 +183,11 @@ Value runStatNonLine(OperatorCall& call) {
   }
   driver.setConstraint(constraint.get());
   msg << effectsLine(system, settings, constraint.get(), cuts);
+  if (!call.session.options().executeOperators) {
+    // `stella check`: every input is read and checked above (model, materials and relations,
+    // loads, instants, NEWTON, OBSERVATION, SUIVI_DDL, contact); nothing is computed.
+    return call.reused ? Value(call.reused) : call.makeConcept(nullptr);
+  }
 
   MechanicalState state = driver.initialState(times.front());
   if (initialStep) {

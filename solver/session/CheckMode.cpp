@@ -54,13 +54,19 @@ bool conceptsHoldData(const KeywordTree& tree) {
   return true;
 }
 
+// Operators that read and check all their inputs, then return a concept without data before
+// computing when the session does not execute operators (`stella check`).
+bool checksItsInputs(const std::string& command) {
+  return command == "STAT_NON_LINE";
+}
+
 } // namespace
 
 bool Session::runsInCheck(const std::string& command, const KeywordTree& keywords) const {
   if (definesLanguageValues(command)) {
     return true;
   }
-  if (!definesData(command) || !conceptsHoldData(keywords)) {
+  if (!(definesData(command) || checksItsInputs(command)) || !conceptsHoldData(keywords)) {
     return false;
   }
   if (command == "LIRE_MAILLAGE") {

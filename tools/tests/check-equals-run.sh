@@ -14,7 +14,7 @@ stella="$(readlink -f "$1")"
 root="$(readlink -f "$2")"
 run_seconds="${3:-20}"
 work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
+trap '[ -n "${KEEP_WORK:-}" ] || rm -rf "$work"' EXIT
 ENVIRONMENT='^(UNIT_1|MESH_[0-9]+|MED_[0-9]+|GMSH_[0-9]+|RUN_[0-9]+|EXPORT_[0-9]+)$'
 
 agree=0
@@ -108,6 +108,8 @@ printf '%sCL = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='"'"'NOPE'"'"', DY
 printf '%sCL = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='"'"'BLOC_BASE'"'"', DY=0.0))\nR = STAT_NON_LINE(MODELE=MO, CHAM_MATER=MAT, EXCIT=_F(CHARGE=CL), INCREMENT=_F(LIST_INST=L1),\n    COMPORTEMENT=_F(RELATION='"'"'VMIS_CINE_LINE'"'"', TOUT='"'"'OUI'"'"'))\nFIN()\n' "$head_comm" >"$bad/relation.comm"
 printf '%sCL = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='"'"'BLOC_BASE'"'"', DY=0.0))\nR = STAT_NON_LINE(MODELE=MO, CHAM_MATER=MAT, EXCIT=_F(CHARGE=CL), INCREMENT=_F(LIST_INST=L1),\n    SUIVI_DDL=_F(NOM_CHAM='"'"'DEPL'"'"', NOM_CMP='"'"'DX'"'"', TOUT='"'"'OUI'"'"', NOM_VARI='"'"'EPSPEQ'"'"'))\nFIN()\n' "$head_comm" >"$bad/suivi_ddl.comm"
 printf '%sL2 = DEFI_LIST_INST(DEFI_LIST=_F(VALE=(0.0, 1.0, 1.0)))\nFIN()\n' "$head_comm" >"$bad/list_inst.comm"
+printf '%sCL = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='"'"'BLOC_BASE'"'"', DY=0.0))\nR = STAT_NON_LINE(MODELE=MO, CHAM_MATER=MAT, EXCIT=_F(CHARGE=CL), INCREMENT=_F(LIST_INST=L1),\n    SUIVI_DDL=_F(NOM_CHAM='"'"'DEPL'"'"', NOM_CMP='"'"'DX'"'"', GROUP_NO='"'"'NOPE'"'"'))\nFIN()\n' "$head_comm" >"$bad/suivi_ddl_group.comm"
+printf '%sSOFT = DEFI_MATERIAU(ELAS=_F(E=2.0e5, NU=0.3))\nMS = AFFE_MATERIAU(MAILLAGE=MA, AFFE=_F(TOUT='"'"'OUI'"'"', MATER=SOFT))\nCL = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='"'"'BLOC_BASE'"'"', DY=0.0))\nR = STAT_NON_LINE(MODELE=MO, CHAM_MATER=MS, EXCIT=_F(CHARGE=CL), INCREMENT=_F(LIST_INST=L1),\n    COMPORTEMENT=_F(RELATION='"'"'VMIS_ISOT_LINE'"'"', TOUT='"'"'OUI'"'"'))\nFIN()\n' "$head_comm" >"$bad/no_ecro_line.comm"
 for comm in "$bad"/*.comm; do
   compare "bad input $(basename "$comm")" "$comm" "$comm" --unit "20=$mesh"
 done
