@@ -157,12 +157,22 @@ void describeLevel(const Level& level, int indent, std::string& out) {
       if (!s.renamedTo.empty()) {
         out += " (old spelling of " + s.renamedTo + ")";
       }
+      if (s.notImplemented) {
+        out += s.acceptedValue ? " (not implemented yet, except " + s.acceptedValue->repr() + ")"
+                               : std::string(" (not implemented yet)");
+      }
+      if (!s.implementedValues.empty()) {
+        out += " (implemented: " + values(s.implementedValues) + ")";
+      }
       out += "  -- " + s.description + "\n";
     } else if (e.factor) {
       const FactorSpec& f = *e.factor;
       out += pad + e.name + " : FACT " + presenceLetter(f.presence) + bounds(f.min, f.max);
       if (!f.renamedTo.empty()) {
         out += " (old spelling of " + f.renamedTo + ")";
+      }
+      if (f.notImplemented) {
+        out += " (not implemented yet)";
       }
       out += "  -- " + f.description + "\n";
       describeLevel(f.body, indent + 4, out);

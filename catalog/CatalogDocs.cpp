@@ -50,6 +50,25 @@ std::string join(const std::vector<std::string>& v, const std::string& sep) {
   return out;
 }
 
+// What stella implements of a keyword (non_implemente=, accepte=, implemente=, stella=).
+void writeSupport(const SimpleSpec& s, const std::string& pad, std::string& out) {
+  if (s.notImplemented) {
+    out += pad + "  - **not implemented yet** in stella" +
+           (s.notImplemented->empty() ? "" : ": " + *s.notImplemented);
+    if (s.acceptedValue) {
+      out += " (" + s.acceptedValue->repr() + " accepted)";
+    }
+    out += "\n";
+  }
+  if (!s.implementedValues.empty()) {
+    out += pad + "  - implemented in stella: " + valueList(s.implementedValues) +
+           " (the others: not implemented yet)\n";
+  }
+  if (!s.stellaNote.empty()) {
+    out += pad + "  - in stella: " + s.stellaNote + "\n";
+  }
+}
+
 void writeLevel(const Level& level, int depth, std::string& out) {
   std::string pad(static_cast<std::size_t>(2 * depth), ' ');
   for (const Rule& r : level.rules) {
@@ -89,6 +108,7 @@ void writeLevel(const Level& level, int depth, std::string& out) {
       if (!s.renamedTo.empty()) {
         out += pad + "  - older spelling, read as **" + s.renamedTo + "**\n";
       }
+      writeSupport(s, pad, out);
       if (s.oldFactorForm) {
         out += pad + "  - 2020 form `" + e.name + "=_F(...)` accepted and read as " +
                (s.oldFactorValue ? s.oldFactorValue->repr() : std::string("'OUI'")) + ":\n";
@@ -100,6 +120,13 @@ void writeLevel(const Level& level, int depth, std::string& out) {
              count(f.min, f.max, "occurrences") + ") — " + f.description + "\n";
       if (!f.renamedTo.empty()) {
         out += pad + "  - older spelling, read as **" + f.renamedTo + "**\n";
+      }
+      if (f.notImplemented) {
+        out += pad + "  - **not implemented yet** in stella" +
+               (f.notImplemented->empty() ? "" : ": " + *f.notImplemented) + "\n";
+      }
+      if (!f.stellaNote.empty()) {
+        out += pad + "  - in stella: " + f.stellaNote + "\n";
       }
       writeLevel(f.body, depth + 1, out);
     } else if (e.block) {
@@ -114,7 +141,12 @@ std::string page(const CommandSpec& c) {
   out += std::string("- kind: ") + commandKindName(c.kind) + "\n";
   out += "- returns: " + describeResult(c) + "\n";
   out += "- reuse: " + describeReuse(c) + "\n";
-  out += "- catalogue file: `" + c.file + "`\n\n";
+  out += "- catalogue file: `" + c.file + "`\n";
+  if (c.notImplemented) {
+    out += "- **not implemented yet** in stella (the catalogue validates it; a run refuses it)" +
+           (c.notImplemented->empty() ? "" : ": " + *c.notImplemented) + "\n";
+  }
+  out += "\n";
   out += "## Keywords\n\n";
   writeLevel(c.body, 0, out);
   return out;

@@ -149,6 +149,14 @@ Value makeSimple(const CallArguments& a) {
       s->into = listOf(v);
     } else if (k.name == "hors_perimetre") {
       s->outOfScopeValues = listOf(v);
+    } else if (k.name == "non_implemente") {
+      s->notImplemented = text(k);
+    } else if (k.name == "accepte") {
+      s->acceptedValue = v;
+    } else if (k.name == "implemente") {
+      s->implementedValues = listOf(v);
+    } else if (k.name == "stella") {
+      s->stellaNote = text(k);
     } else if (k.name == "min") {
       s->min = bound(k);
     } else if (k.name == "max") {
@@ -180,6 +188,14 @@ Value makeSimple(const CallArguments& a) {
   if (s->types.empty()) {
     fail("SIMP needs typ=");
   }
+  if (s->acceptedValue && !s->notImplemented) {
+    fail("accepte= goes with non_implemente= (the one value accepted of a keyword not implemented)");
+  }
+  for (const Value& v : s->implementedValues) {
+    if (std::none_of(s->into.begin(), s->into.end(), [&](const Value& x) { return x.equals(v); })) {
+      fail("implemente= lists " + v.repr() + ", which is not a value of into=");
+    }
+  }
   auto o = std::make_shared<SpecObject>();
   o->simple = std::move(s);
   return wrap(std::move(o));
@@ -202,6 +218,10 @@ Value makeFactor(const CallArguments& a) {
       f->description = text(k);
     } else if (k.name == "remplace_par") {
       f->renamedTo = text(k);
+    } else if (k.name == "non_implemente") {
+      f->notImplemented = text(k);
+    } else if (k.name == "stella") {
+      f->stellaNote = text(k);
     } else {
       fail("FACT has no attribute " + k.name + " (a keyword's value must be SIMP, FACT or BLOC)");
     }
@@ -278,6 +298,8 @@ NativeFunction makeCommand(CommandKind kind) {
         }
       } else if (k.name == "supprimes") {
         c->removedKeywords = texts(k);
+      } else if (k.name == "non_implemente") {
+        c->notImplemented = text(k);
       } else {
         fail("OPER/MACRO/PROC has no attribute " + k.name);
       }

@@ -83,6 +83,14 @@ struct SimpleSpec {
   // this factor, then stored as `oldFactorValue`.
   std::shared_ptr<const FactorSpec> oldFactorForm;
   std::optional<Value> oldFactorValue;
+  // Support in stella (declared here only): non_implemente='why' refuses the keyword when the user
+  // gives it (CATALOG_17 "not implemented yet"), except with the value accepte= (its default);
+  // implemente=(...) lists the values of `into` stella implements, the others are refused;
+  // stella='...' says what stella does with the keyword (shown in doc/catalog).
+  std::optional<std::string> notImplemented;
+  std::optional<Value> acceptedValue;
+  ValueList implementedValues;
+  std::string stellaNote;
   bool isConceptType() const;
 };
 
@@ -92,6 +100,8 @@ struct FactorSpec {
   int max = 1;
   std::string description;
   std::string renamedTo;
+  std::optional<std::string> notImplemented; // non_implemente='why' (see SimpleSpec)
+  std::string stellaNote;
   Level body;
 };
 
@@ -117,6 +127,8 @@ struct CommandSpec {
   char reentrant = 'n';                     // 'n' never, 'o' must reuse, 'f' may reuse
   std::string reuseKeyword;                 // the keyword naming the reused concept ('o:MAILLAGE')
   std::vector<std::string> removedKeywords; // names rules may cite although no longer defined
+  // non_implemente='why': stella has no operator for the command yet (COMMAND_1 when called).
+  std::optional<std::string> notImplemented;
   Level body;
 
   bool returnsConcept() const {

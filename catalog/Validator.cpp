@@ -406,6 +406,9 @@ private:
         if (g != givenArgs.end()) {
           present.push_back(e->name);
           noteRename(e->name, stored, g->second->location);
+          if (refuseNotImplemented(e->name, s, *g->second, where)) {
+            continue;
+          }
           if (auto values = checkSimple(e->name, s, *g->second, where)) {
             tree.addSimple(SimpleKeyword{stored, std::move(*values), g->second->location, false});
           }
@@ -425,6 +428,10 @@ private:
         if (g != givenArgs.end()) {
           present.push_back(e->name);
           noteRename(e->name, stored, g->second->location);
+          if (f.notImplemented) {
+            notImplementedYet("keyword " + e->name + " of " + where, *f.notImplemented, g->second->location);
+            continue;
+          }
           // The other definitions of this factor keyword in exclusive blocks of this level, to
           // tell a user which variant a misplaced keyword belongs to.
           std::vector<std::pair<const FactorSpec*, std::string>> variants;
@@ -458,6 +465,42 @@ private:
     }
     checkRules(active, present, at, where);
     return tree;
+  }
+
+  void notImplementedYet(const std::string& what, const std::string& why, const SourceLocation& at,
+                         std::vector<std::string> notes = {}) {
+    if (!why.empty()) {
+      notes.insert(notes.begin(), why);
+    }
+    notes.push_back("`stella catalog " + command_.name + "` shows what stella implements of it");
+    Diagnostic d = Diagnostic::fatal("CATALOG_17", what + " is not implemented yet", at);
+    for (auto& n : notes) {
+      d.withNote(std::move(n));
+    }
+    errors_.push_back(std::move(d));
+  }
+
+  // A keyword the catalogue marks non_implemente= given by the user: refused unless its value is
+  // the one accepted (accepte=, the keyword's default).
+  bool refuseNotImplemented(const std::string& name, const SimpleSpec& s, const KeywordArgument& k,
+                            const std::string& where) {
+    if (!s.notImplemented) {
+      return false;
+    }
+    if (s.acceptedValue && k.value) {
+      ValueList given = items(*k.value);
+      if (given.size() == 1 && (given.front().equals(*s.acceptedValue) ||
+                                (given.front().isNumber() && s.acceptedValue->isNumber() &&
+                                 given.front().asReal() == s.acceptedValue->asReal()))) {
+        return false;
+      }
+    }
+    std::vector<std::string> notes;
+    if (s.acceptedValue) {
+      notes.push_back("only " + name + "=" + s.acceptedValue->repr() + " is accepted (or leave it out)");
+    }
+    notImplementedYet("keyword " + name + " of " + where, *s.notImplemented, k.location, std::move(notes));
+    return true;
   }
 
   static void collectVariants(const Level& level, const std::string& name, const FactorSpec* self,
@@ -586,7 +629,8 @@ private:
         if (v.isString()) {
           return v;
         }
-      } else if (v.isConcept() && (t == "assd" || types_.isA(v.asConcept()->type, t))) {
+      } else if (v.isConcept() && (t == "assd" || v.asConcept()->type == kUncheckedConceptType ||
+                                   types_.isA(v.asConcept()->type, t))) {
         return v;
       }
     }
@@ -682,6 +726,17 @@ private:
         error("CATALOG_3",
               name + " = " + converted->repr() + " is not an allowed value; allowed: " + joinValues(s.into),
               k.valueLocation, near);
+        continue;
+      }
+      if (!s.implementedValues.empty() &&
+          std::none_of(s.implementedValues.begin(), s.implementedValues.end(),
+                       [&](const Value& done) { return done.equals(*converted); })) {
+        std::vector<std::string> notes{"implemented: " + joinValues(s.implementedValues)};
+        if (!s.stellaNote.empty()) {
+          notes.push_back(s.stellaNote);
+        }
+        notImplementedYet(name + "=" + converted->repr() + " in " + where, "", k.valueLocation,
+                          std::move(notes));
         continue;
       }
       if (converted->isNumber()) {

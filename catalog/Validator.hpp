@@ -21,6 +21,10 @@ CompiledExpression::Lookup levelLookup(const std::map<std::string, Value>& value
 // Evaluates a condition; an error in a catalogue condition is an internal error.
 bool evaluateCondition(const CompiledExpression& condition, const CompiledExpression::Lookup& lookup);
 
+// The type of the concept `stella check` goes on with after a command it refused: accepted
+// wherever a concept is expected, so that one error does not cause others downstream.
+inline const std::string kUncheckedConceptType = "?";
+
 ValidatedCall validateCall(const CommandSpec& command, const ConceptTypes& types, const CallArguments& args);
 
 // Edit distance used for "did you mean" suggestions.

@@ -6,7 +6,6 @@
 // of (n, component c) and k_c u_c to its internal forces (notice section 4.4.2: springs hold the
 // rigid-body motions of a body that nothing else holds).
 
-#include "catalog/KeywordTree.hpp"
 #include "interpreter/Value.hpp"
 #include "solver/mesh/Mesh.hpp"
 
@@ -17,6 +16,7 @@
 namespace stella {
 
 class Model;
+class KeywordTree; // the readers below take the validated tree; numerics never include it
 
 struct DiscreteSpring {
   CellId cell = 0;

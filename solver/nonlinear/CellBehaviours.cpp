@@ -38,9 +38,9 @@ std::unique_ptr<behaviour::Behaviour> makeBehaviour(const Material& m, const std
     return std::make_unique<behaviour::VonMisesIsotropicLinear>(
         e, behaviour::LinearHardening{m.hardening->tangentModulus, m.hardening->yieldStress});
   }
-  throw UserError(
-      Diagnostic::fatal("COMPOR_1", fmt::format("RELATION='{}' is not implemented yet", relation), at)
-          .withNote("available: ELAS, VMIS_ISOT_LINE"));
+  // The catalogue refuses the other relations (COMPORTEMENT RELATION implemente=).
+  STELLA_ASSERT(false, fmt::format("RELATION='{}' passed the catalogue but has no behaviour", relation));
+  return nullptr;
 }
 
 } // namespace

@@ -17,7 +17,8 @@ class CellBehaviours {
 public:
   // `relations[c]` is the RELATION of volume cell c ("ELAS" for every cell of MECA_STATIQUE).
   // Throws UserError: MATER_6 (a cell without material), MATER_7 (material without ELAS),
-  // MATER_8 (VMIS_ISOT_LINE without ECRO_LINE), COMPOR_1 (relation not implemented yet).
+  // MATER_8 (VMIS_ISOT_LINE without ECRO_LINE), a relation outside the catalogue's implemente= list is an
+  // internal error.
   CellBehaviours(const Model& model, const MaterialField& materials,
                  const std::vector<std::string>& relations, const SourceLocation& at);
 

@@ -53,13 +53,10 @@ FieldExtraction FieldExtraction::read(const KeywordTree& occ, const Mesh& mesh, 
   FieldExtraction e;
   e.at = occ.location();
   e.field = occ.text("NOM_CHAM");
-  if (!e.nodal() && !gaussPointField(e.field)) {
-    throw UserError(
-        Diagnostic::fatal(
-            "SNL_1", fmt::format("STAT_NON_LINE {} NOM_CHAM='{}' is not implemented yet", keyword, e.field),
-            occ.locationOf("NOM_CHAM"))
-            .withNote("available: DEPL, CONT_NOEU (with CONTACT), SIEF_ELGA, VARI_ELGA, EPSI_ELGA"));
-  }
+  // The catalogue refuses the other fields (NOM_CHAM implemente=).
+  STELLA_ASSERT(
+      e.nodal() || gaussPointField(e.field),
+      fmt::format("{} NOM_CHAM='{}' passed the catalogue but cannot be extracted", keyword, e.field));
   e.components = occ.texts("NOM_CMP");
   e.evalField = occ.textOr("EVAL_CHAM", "VALE");
   if (e.nodal()) {

@@ -25,27 +25,13 @@ namespace {
 }
 
 void refuseUnsupported(const KeywordTree& kw) {
-  const std::string operation = kw.text("OPERATION");
-  if (operation != "EXTR") {
-    notImplemented(kw, "OPERATION", fmt::format("OPERATION='{}'", operation),
-                   "stella's CREA_CHAMP extracts a field of a result: OPERATION='EXTR', RESULTAT=..., "
-                   "NOM_CHAM=..., TYPE_CHAM=...");
-  }
+  // OPERATION other than EXTR, TYPE_MAXI, FREQ, NUME_MODE, NOEUD_CMP, NOM_CAS, ANGLE and
+  // INTERPOL='LIN' are refused by the catalogue (implemente=, non_implemente=).
   for (const char* k : {"MAILLAGE", "TABLE", "CARA_ELEM", "CHARGE", "CHAM_MATER"}) {
     if (kw.has(k) && !kw.has("RESULTAT")) {
       notImplemented(kw, k, fmt::format("OPERATION='EXTR' from {}", k),
                      "extract a field of a result with RESULTAT=..., NOM_CHAM=...");
     }
-  }
-  for (const char* k : {"TYPE_MAXI", "FREQ", "NUME_MODE", "NOEUD_CMP", "NOM_CAS", "ANGLE"}) {
-    if (kw.has(k)) {
-      notImplemented(kw, k, fmt::format("OPERATION='EXTR' with {}", k),
-                     "designate the step with NUME_ORDRE or INST");
-    }
-  }
-  if (kw.textOr("INTERPOL", "NON") != "NON") {
-    notImplemented(kw, "INTERPOL", "INTERPOL='LIN' (a field interpolated between two steps)",
-                   "extract a stored step (NUME_ORDRE, or INST with PRECISION)");
   }
   if (kw.text("TYPE_CHAM").rfind("CART_", 0) == 0) {
     notImplemented(kw, "TYPE_CHAM", fmt::format("TYPE_CHAM='{}' (a carte)", kw.text("TYPE_CHAM")),

@@ -13,6 +13,9 @@
 #include "solver/contact/ContactStepConstraint.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/model/ElementCharacteristics.hpp"
+#include "solver/model/Material.hpp"
+#include "solver/model/MaterialField.hpp"
+#include "solver/model/Model.hpp"
 #include "solver/model/Selection.hpp"
 #include "solver/nonlinear/Archiving.hpp"
 #include "solver/nonlinear/CommandInputs.hpp"
@@ -26,7 +29,6 @@
 #include "solver/nonlinear/ResultFields.hpp"
 #include "solver/nonlinear/ResultLoads.hpp"
 #include "solver/nonlinear/StatNonLineInputs.hpp"
-#include "solver/nonlinear/StatNonLineKeywords.hpp"
 #include "solver/nonlinear/StepMeasures.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
@@ -39,19 +41,27 @@ namespace stella {
 
 namespace {
 
-std::vector<std::string> relationsOf(const KeywordTree& kw, const Model& model) {
+// The relation of each cell. A relation whose material lacks its parameters is refused at the
+// RELATION keyword that gives it (MATER_8), not at the command's name.
+std::vector<std::string> relationsOf(const KeywordTree& kw, const Model& model,
+                                     const MaterialField& materials) {
   std::vector<std::string> relations(model.cells.size(), "ELAS");
   for (const KeywordTree& occ : kw.occurrences("COMPORTEMENT")) {
-    const std::string deformation = occ.textOr("DEFORMATION", "PETIT");
-    if (deformation != "PETIT") {
-      throw UserError(Diagnostic::fatal("COMPOR_2",
-                                        fmt::format("DEFORMATION='{}' is not implemented yet", deformation),
-                                        occ.locationOf("DEFORMATION"))
-                          .withNote("available: DEFORMATION='PETIT' (small strains)"));
-    }
-    const std::string relation = occ.textOr("RELATION", "ELAS");
+    // RELATION and DEFORMATION: the catalogue implements ELAS, VMIS_ISOT_LINE and PETIT only.
+    const std::string relation = occ.text("RELATION");
     for (CellId c : selectCells(*model.mesh, occ)) {
       relations[static_cast<std::size_t>(c)] = relation;
+      const Material* m = materials.material(c);
+      if (relation == "VMIS_ISOT_LINE" && model.cell(c).kind == ElementKind::Volume && m != nullptr &&
+          !m->hardening) {
+        throw UserError(
+            Diagnostic::fatal("MATER_8",
+                              fmt::format("RELATION='VMIS_ISOT_LINE' on cell {} needs ECRO_LINE in "
+                                          "material {}",
+                                          model.mesh->cellName(c), m->name),
+                              occ.locationOf("RELATION"))
+                .withNote("add ECRO_LINE=_F(D_SIGM_EPSI=..., SY=...) to DEFI_MATERIAU"));
+      }
     }
   }
   return relations;
@@ -143,12 +153,11 @@ std::string effectsLine(const MechanicalSystem& system, const NewtonSettings& se
 
 Value runStatNonLine(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
-  refuseUnsupportedKeywords(kw);
   auto model = readModel(kw);
   auto materials = readMaterialField(kw, *model);
   const auto commandStart = std::chrono::steady_clock::now();
-  MechanicalSystem system(model, materials, readExcitations(kw), relationsOf(kw, *model), call.location,
-                          readCaraElem(kw));
+  MechanicalSystem system(model, materials, readExcitations(kw), relationsOf(kw, *model, *materials),
+                          call.location, readCaraElem(kw));
   system.phases().numbering +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - commandStart).count();
   system.solver().setOptions(readSolverOptions(kw));
@@ -177,6 +186,11 @@ Value runStatNonLine(OperatorCall& call) {
   driver.setConstraint(constraint.get());
   msg << effectsLine(system, settings, constraint.get(), cuts);
   msg << effectsReport(kw, system, settings, constraint.get(), cuts, !observations.empty());
+  if (!call.session.options().executeOperators) {
+    // `stella check`: every input is read and checked above (model, materials and relations,
+    // loads, instants, NEWTON, OBSERVATION, SUIVI_DDL, contact); nothing is computed.
+    return call.reused ? Value(call.reused) : call.makeConcept(nullptr);
+  }
 
   MechanicalState state = driver.initialState(times.front());
   if (initialStep) {

@@ -117,6 +117,12 @@ public:
   const SessionCounts& counts() const { return counts_; }
   const std::vector<CommandTiming>& timings() const { return timings_; }
 
+  // `stella check` (executeOperators false): each command's errors go to `sink` and the file goes
+  // on with a placeholder concept, so one pass reports every command's errors; the operators that
+  // only define data (meshes read from a declared unit, models, materials, loads...) run when
+  // their inputs are real, so their checks (groups in the mesh...) are made (CheckMode.cpp).
+  void collectErrorsIn(DiagnosticSink& sink) { checkSink_ = &sink; }
+
   // CommandHandler
   Value callCommand(const std::string& command, const CallArguments& args,
                     const std::string& target) override;
@@ -160,6 +166,10 @@ private:
   std::vector<std::shared_ptr<DeferredReport>> deferred_;
   bool finished_ = false;
   int commandCount_ = 0;
+  DiagnosticSink* checkSink_ = nullptr;
+  Value callCommandOnce(const std::string& command, const CallArguments& args, const std::string& target);
+  Value checkPlaceholder(const std::string& command, const CallArguments& args, const std::string& target);
+  bool runsInCheck(const std::string& command, const KeywordTree& keywords) const;
 };
 
 } // namespace stella

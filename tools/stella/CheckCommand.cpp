@@ -4,7 +4,10 @@
 #include "Commands.hpp"
 #include "catalog/Catalog.hpp"
 #include "interpreter/Interpreter.hpp"
+#include "solver/job/Export.hpp"
 #include "solver/session/Session.hpp"
+
+#include <filesystem>
 
 #include <fstream>
 #include <iostream>
@@ -27,6 +30,52 @@ public:
   }
   int errors = 0;
 };
+
+// The units of a check: an export's lines, or `--unit N` (a result unit) and `--unit N=FILE` (a
+// data unit, read by LIRE_MAILLAGE so that the groups are checked). Returns the command files.
+std::vector<std::string> declareUnits(const CheckArguments& args, Session& session) {
+  std::vector<std::string> commandFiles;
+  if (std::filesystem::path(args.file).extension() == ".export") {
+    const Export e = Export::read(args.file);
+    for (const ExportEntry& entry : e.entries) {
+      if (entry.directory || entry.unit <= 0) {
+        continue;
+      }
+      if (entry.result) {
+        session.declareResultUnit(entry.unit);
+      }
+      if (entry.data && entry.type != "comm") {
+        session.declareUnit(entry.unit, entry.path);
+      }
+    }
+    for (const ExportEntry* comm : e.commandFiles()) {
+      commandFiles.push_back(comm->path.string());
+    }
+  } else {
+    commandFiles.push_back(args.file);
+    for (int unit : {6, 8, 80, 81}) { // the result units of a quick run (`stella run FILE.comm`)
+      session.declareResultUnit(unit);
+    }
+  }
+  for (const std::string& u : args.units) {
+    const auto equal = u.find('=');
+    int unit = 0;
+    try {
+      unit = std::stoi(u.substr(0, equal));
+    } catch (const std::exception&) {
+      unit = 0;
+    }
+    if (unit < 1 || unit > 99) {
+      throw UserError(Diagnostic::fatal("CLI_1", "--unit " + u + ": expected N or N=FILE with 1 <= N <= 99"));
+    }
+    if (equal == std::string::npos) {
+      session.declareResultUnit(unit);
+    } else {
+      session.declareUnit(unit, std::filesystem::absolute(u.substr(equal + 1)));
+    }
+  }
+  return commandFiles;
+}
 
 } // namespace
 
@@ -51,13 +100,8 @@ int check(const CheckArguments& args) {
     options.executeOperators = false;
     const Catalog& catalog = Catalog::builtin();
     Session session(catalog, silent, silent, options);
-    // the result units of a quick run (`stella run FILE.comm`), and those given with --unit
-    for (int unit : {6, 8, 80, 81}) {
-      session.declareResultUnit(unit);
-    }
-    for (int unit : args.units) {
-      session.declareResultUnit(unit);
-    }
+    session.collectErrorsIn(sink); // every command's errors, in one pass
+    const std::vector<std::string> commandFiles = declareUnits(args, session);
     InterpreterOptions budget;
     if (args.maxOperations > 0) {
       budget.operationBudget = args.maxOperations;
@@ -67,7 +111,13 @@ int check(const CheckArguments& args) {
     for (const auto& name : catalog.commandNames()) {
       interpreter.defineCommand(name);
     }
-    RunStatus status = interpreter.run(source);
+    RunStatus status = RunStatus::Completed;
+    for (const std::string& comm : commandFiles) {
+      status = interpreter.run(SourceFile::load(comm));
+      if (status == RunStatus::Failed || status == RunStatus::SyntaxError || session.finished()) {
+        break;
+      }
+    }
     bool ok = sink.errors == 0 && status != RunStatus::Failed && status != RunStatus::SyntaxError;
     if (ok) {
       std::cerr << args.file << ": valid\n";

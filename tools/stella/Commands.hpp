@@ -28,7 +28,8 @@ struct CheckArguments {
   bool syntaxOnly = false;
   bool dumpTokens = false;
   bool dumpAst = false;
-  std::vector<int> units; // result units declared besides the quick run's 6, 8, 80, 81
+  // "N": a result unit declared besides the quick run's 6, 8, 80, 81; "N=FILE": a data unit.
+  std::vector<std::string> units;
   long long maxOperations = 0;
   long long maxMemoryMiB = 0;
 };

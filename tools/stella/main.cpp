@@ -23,6 +23,7 @@ Examples:
   stella run study.export                     batch run: results where the export says
   stella run study.comm --unit 20=mesh.med    quick run: results beside study.comm
   stella check study.comm                     validate every command without running
+  stella check study.comm --unit 20=mesh.med  ... and check the groups against the mesh
   stella check --syntax study.comm            parse only
   stella catalog DEFI_CONTACT                 the keyword tree of a command
   stella catalog --list                       every command stella knows
@@ -97,14 +98,15 @@ int main(int argc, char** argv) {
 
   stella::cli::CheckArguments checkArgs;
   auto* check = app.add_subcommand("check", "Validate a command file without running it");
-  check->add_option("file", checkArgs.file, "the .comm file")->required()->check(CLI::ExistingFile);
+  check->add_option("file", checkArgs.file, "the .comm file, or the .export (its units, its command files)")
+      ->required()
+      ->check(CLI::ExistingFile);
   check->add_flag("--syntax", checkArgs.syntaxOnly, "parse only");
   check->add_flag("--dump-tokens", checkArgs.dumpTokens, "print the tokens");
   check->add_flag("--dump-ast", checkArgs.dumpAst, "print the syntax tree");
-  check
-      ->add_option("--unit", checkArgs.units,
-                   "a result unit the study's export declares (besides 6, 8, 80, 81)")
-      ->check(CLI::Range(1, 99));
+  check->add_option("--unit", checkArgs.units,
+                    "N: a result unit the study's export declares (besides 6, 8, 80, 81); N=FILE: a data "
+                    "unit (the mesh), read so its groups are checked");
   check->add_option("--max-operations", checkArgs.maxOperations, operationsHelp)->check(CLI::PositiveNumber);
   check->add_option("--max-memory", checkArgs.maxMemoryMiB, memoryHelp)->check(CLI::PositiveNumber);
 

@@ -4,6 +4,7 @@
 // internal forces k u of the springs in equilibrium with the load (the Newton residual), and
 // the user errors of AFFE_CARA_ELEM and of a discrete element left without stiffness.
 
+#include "catalog/KeywordTree.hpp"
 #include "interpreter/Diagnostics.hpp"
 #include "solver/fem/BoxMesh.hpp"
 #include "solver/model/ElementCharacteristics.hpp"

@@ -357,8 +357,26 @@ FIN()
 )";
   auto run = runStudy("mixte", comm, kMesh);
   EXPECT_EQ(run->failure(), FailureKind::Error);
-  EXPECT_NE(run->mess().find("STAT_NON_LINE RECH_LINEAIRE METHODE='MIXTE' is not implemented yet"),
+  EXPECT_NE(run->mess().find("METHODE='MIXTE' in RECH_LINEAIRE of STAT_NON_LINE is not implemented yet"),
             std::string::npos)
+      << run->mess();
+}
+
+// A relation whose material lacks its parameters is refused at the RELATION keyword (line 20,
+// column 35), not at STAT_NON_LINE's name (line 18).
+TEST(StatNonLineDriver, RelationWithoutItsMaterialParametersIsLocatedAtRelation) {
+  const std::string comm = kPreamble +
+                           "SOFT = DEFI_MATERIAU(ELAS=_F(E=200000.0, NU=0.3))\n"
+                           "CS = AFFE_MATERIAU(MAILLAGE=M, AFFE=_F(TOUT='OUI', MATER=SOFT))\n"
+                           "TIMES = DEFI_LIST_REEL(VALE=(0.0, 1.0))\n"
+                           "R = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CS, EXCIT=_F(CHARGE=BC),\n"
+                           "                  INCREMENT=_F(LIST_INST=TIMES),\n"
+                           "                  COMPORTEMENT=_F(RELATION='VMIS_ISOT_LINE', TOUT='OUI'))\n"
+                           "FIN()\n";
+  auto run = runStudy("no_ecro", comm, kMesh);
+  EXPECT_EQ(run->failure(), FailureKind::Error);
+  EXPECT_NE(run->mess().find("MATER_8"), std::string::npos) << run->mess();
+  EXPECT_NE(run->mess().find(":20:35: error: RELATION='VMIS_ISOT_LINE' on cell"), std::string::npos)
       << run->mess();
 }
 

@@ -202,10 +202,12 @@ TEST(StatNonLineObservation, RefusesWhatIsNotImplementedByName) {
       runStudy("obs_vari",
                study("OBSERVATION=_F(NOM_CHAM='VARI_ELGA', NOM_VARI='EPSPEQ', TOUT='OUI', POINT=1)"), kMesh);
   EXPECT_EQ(vari->failure(), FailureKind::Error);
-  EXPECT_NE(vari->mess().find("STAT_NON_LINE OBSERVATION/NOM_VARI is not implemented yet"), std::string::npos)
+  EXPECT_NE(vari->mess().find("keyword NOM_VARI of OBSERVATION of STAT_NON_LINE is not implemented yet"),
+            std::string::npos)
       << vari->mess();
   auto vite = runStudy("obs_vite", study("OBSERVATION=_F(NOM_CHAM='VITE', NOM_CMP='DX', TOUT='OUI')"), kMesh);
-  EXPECT_NE(vite->mess().find("OBSERVATION NOM_CHAM='VITE' is not implemented yet"), std::string::npos)
+  EXPECT_NE(vite->mess().find("NOM_CHAM='VITE' in OBSERVATION of STAT_NON_LINE is not implemented yet"),
+            std::string::npos)
       << vite->mess();
   auto cmp = runStudy("obs_cmp", study("OBSERVATION=_F(NOM_CHAM='DEPL', NOM_CMP='DRX', NOEUD='N3')"), kMesh);
   EXPECT_EQ(cmp->failure(), FailureKind::Error);
