@@ -1,4 +1,4 @@
-#include "solver/nonlinear/EffectsReport.hpp"
+#include "solver/operators/EffectsReport.hpp"
 
 #include "solver/model/Selection.hpp"
 
@@ -21,7 +21,7 @@ std::vector<std::string> behaviourLines(const KeywordTree& kw, const MechanicalS
   int index = 0;
   for (const KeywordTree& occ : kw.occurrences("COMPORTEMENT")) {
     ++index;
-    const std::string relation = occ.textOr("RELATION", "ELAS");
+    const std::string relation = occ.text("RELATION");
     const auto cells = selectCells(*model.mesh, occ);
     for (CellId c : cells) {
       covered[static_cast<std::size_t>(c)] = true;
@@ -30,8 +30,8 @@ std::vector<std::string> behaviourLines(const KeywordTree& kw, const MechanicalS
                                   ? fmt::format("GROUP_MA=({})", fmt::join(occ.texts("GROUP_MA"), ", "))
                                   : std::string("TOUT='OUI'");
     lines.push_back(fmt::format("behaviour {} on {} ({} cell(s)): {}, strains {} [COMPORTEMENT {}]", relation,
-                                where, cells.size(), integrationOf(relation),
-                                occ.textOr("DEFORMATION", "PETIT"), index));
+                                where, cells.size(), integrationOf(relation), occ.text("DEFORMATION"),
+                                index));
   }
   std::size_t rest = 0;
   for (std::size_t c = 0; c < covered.size(); ++c) {
