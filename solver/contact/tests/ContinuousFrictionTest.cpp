@@ -1,0 +1,301 @@
+// Coulomb friction with DEFI_CONTACT FORMULATION='CONTINUE' (D_PLAN), run end to end on command
+// files: an elastic block pressed on a rigid plane (a block whose nodes are all fixed) by its top,
+// then sheared by it. The block's sides are periodic (LIAISON_DDL between the nodes of x = 0 and
+// x = 1 at the same height), so the state is uniform and the closed form exact:
+//   pressing:  N = M d L / H,   M = E (1 - nu) / ((1 + nu) (1 - 2 nu))  (oedometric, eps_xx = 0)
+//   shearing:  stick while G u L / H < mu N: T = G u L / H and zero slip (the constraint s = 0 is
+//              exact with the augmented Lagrangian: round-off only); then slip: T = mu N, slip
+//              s = u - mu N H / (G L), N unchanged.
+// The corner x = 1 of the contact surface is the periodic copy of x = 0: it is not a slave node
+// (SANS_GROUP_NO, else its slip condition repeats the one of x = 0 through the tie), so the slave
+// node x = 0 carries both ends' share (its LAGS_C is twice the pressure; LAGS_F1, the ratio to
+// the Coulomb threshold, is the same on every node). ALGO_FROT STANDARD (the stick rows in the
+// Schur complement) and PENALISATION (COEF_PENA_FROT: a penalised stick; only its sliding is
+// uniform here, see checks()), ALGO_RESO_FROT NEWTON and POINT_FIXE, mu = 0.3 and 1.0. Numbers
+// asserted by TEST_RESU / TEST_TABLE against ANALYTIQUE references inside the command files.
+
+#include "solver/contact/tests/ContactTestMeshes.hpp"
+#include "solver/io/MeshIO.hpp"
+#include "solver/job/BatchJob.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace stella::contact {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct StudyRun {
+  JobDiagnostic diagnostic = JobDiagnostic::AbnormalAbort;
+  std::string message;
+};
+
+std::string readText(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+bool passed(const StudyRun& r) {
+  return r.diagnostic == JobDiagnostic::Ok;
+}
+
+StudyRun runStudy(const std::string& name, const Mesh& mesh, const std::string& comm, bool quiet = false) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "stella_friction_continue" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  writeAsterMesh(dir / "mesh.mail", mesh);
+  const fs::path file = dir / (name + ".comm");
+  std::ofstream(file) << comm;
+  RunOptions options;
+  options.echo = false;
+  options.workDirectory = dir / "work";
+  const JobResult r = runCommandFile(file, {{20, dir / "mesh.mail"}}, options);
+  StudyRun run{r.diagnostic, readText(dir / (name + ".mess"))};
+  if (!quiet && !passed(run)) {
+    std::cerr << run.message << "\n";
+  }
+  return run;
+}
+
+constexpr double young = 1000.0;
+constexpr double nu = 0.3;
+constexpr double press = 0.01;  // d: DY of the top
+constexpr double shear = 0.025; // u = shear x (t - 1), t in [1, 3]
+constexpr int divisions = 4;
+
+double oedometric() {
+  return young * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
+}
+double shearModulus() {
+  return young / (2.0 * (1.0 + nu));
+}
+double normalForce() {
+  return oedometric() * press;
+} // L = H = 1
+
+// The periodic ties of the block B: the nodes of B_XMIN and B_XMAX at the same height, but the
+// top row (driven on both sides).
+std::string periodicTies(const Mesh& mesh) {
+  std::map<long long, NodeId> left;
+  std::map<long long, NodeId> right;
+  const auto key = [&](NodeId n) { return std::llround(mesh.point(n)[1] * 1e6); };
+  for (NodeId n : *mesh.nodeGroup("B_XMIN")) {
+    left[key(n)] = n;
+  }
+  for (NodeId n : *mesh.nodeGroup("B_XMAX")) {
+    right[key(n)] = n;
+  }
+  std::string ties;
+  const long long top = left.rbegin()->first;
+  for (const auto& [y, n] : left) {
+    if (y == top) {
+      continue;
+    }
+    for (const char* c : {"DX", "DY"}) {
+      ties += fmt::format("_F(NOEUD=('{}', '{}'), DDL=('{}', '{}'), COEF_MULT=(1.0, -1.0), COEF_IMPO=0.0), ",
+                          mesh.nodeName(n), mesh.nodeName(right.at(y)), c, c);
+    }
+  }
+  return ties;
+}
+
+struct Shear {
+  double mu = 0.3;
+  bool fixedPoint = false;
+  double penalty = 0.0; // COEF_PENA_FROT (0: ALGO_FROT='STANDARD')
+  // LAGS_F1 is along the pairing's tangent, in 2D t1 = (-n_y, n_x) with n the master's outward
+  // normal: n = +y for A_YMAX, t1 = -x; the friction on the block's bottom is along -x (it resists
+  // the top pulled along +x) = +t1; the force on a slave node is -w mu |LAGS_C| LAGS_F1 t1 (as
+  // -w LAGS_C n for the normal), so LAGS_F1 = -T / (mu N).
+  double lagsF1Sign = -1.0;
+  double onset() const { return mu * normalForce() / shearModulus(); }
+  static double sheared(double t) { return shear * std::max(0.0, t - 1.0); }
+  static double normal(double t) { return normalForce() * std::min(t, 1.0); }
+  bool sticking(double t) const { return sheared(t) < onset(); }
+  double force(double t) const {
+    return sticking(t) ? sheared(t) * shearModulus() : mu * normalForce();
+  }
+  double slip(double t) const {
+    return sticking(t) ? 0.0 : sheared(t) - force(t) / shearModulus();
+  }
+
+  std::string checks(const std::vector<double>& instants) const {
+    std::string s;
+    const auto table = [&](double t, const char* cmp, double value) {
+      s += fmt::format("TEST_TABLE(TABLE=HAUT, NOM_PARA='{}', FILTRE=_F(NOM_PARA='INST', VALE={}), "
+                       "VALE_CALC={:.17g}, TOLE_MACHINE=1e-6, REFERENCE='ANALYTIQUE', VALE_REFE={:.17g}, "
+                       "PRECISION=1e-8)\n",
+                       cmp, t, value, value);
+    };
+    const auto resu = [&](double t, const char* field, const char* cmp, const char* group, const char* kind,
+                          double value, double precision, bool absolute) {
+      s +=
+          fmt::format("TEST_RESU(RESU=_F(RESULTAT=RESU, INST={}, NOM_CHAM='{}', NOM_CMP='{}', GROUP_NO='{}', "
+                      "TYPE_TEST='{}', VALE_CALC={:.17g}, TOLE_MACHINE={}, CRITERE='{}', "
+                      "REFERENCE='ANALYTIQUE', VALE_REFE={:.17g}, PRECISION={}))\n",
+                      t, field, cmp, group, kind, value, absolute ? 1.0 : 1e-6,
+                      absolute ? "ABSOLU" : "RELATIF", value, precision);
+    };
+    for (double t : instants) {
+      table(t, "DY", -normal(t));
+      for (const char* kind : {"MIN", "MAX"}) {
+        resu(t, "CONT_NOEU", "CONT", "ESCL", kind, sticking(t) ? 1.0 : 2.0, 0.0, true);
+      }
+      if (penalty > 0.0 && sticking(t)) {
+        // the penalised stick is not uniform here: the slave node of x = 0 carries its periodic
+        // copy's normal force (multiplier) but only its own penalty spring; only sliding is exact
+        continue;
+      }
+      table(t, "DX", force(t));
+      for (const char* kind : {"MIN", "MAX"}) {
+        // stick: zero slip to round-off (1e-12 absolute: 1e-10 of u); slip: 1e-8 relative
+        resu(t, "DEPL", "DX", "B_YMIN", kind, slip(t), sticking(t) ? 1e-12 : 1e-8, sticking(t));
+        // LAGS_F1 = T / (mu N) on every slave node, 1 sliding
+        const double ratio = force(t) / (mu * normal(t));
+        resu(t, "DEPL", "LAGS_F1", "ESCL", kind, lagsF1Sign * ratio, 1e-8, ratio == 0.0);
+      }
+    }
+    return s;
+  }
+
+  std::string comm(const Mesh& mesh, const std::vector<double>& instants) const {
+    const std::string algo =
+        penalty > 0.0 ? fmt::format("ALGO_FROT='PENALISATION', COEF_PENA_FROT={}, ", penalty) : std::string();
+    std::string list;
+    for (std::size_t i = 1; i < instants.size(); ++i) {
+      list += fmt::format("{}, ", instants[i]);
+    }
+    return fmt::format(
+        "DEBUT()\n"
+        "MA = LIRE_MAILLAGE(FORMAT='ASTER', UNITE=20)\n"
+        "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='D_PLAN'))\n"
+        "MAT = DEFI_MATERIAU(ELAS=_F(E={}, NU={}))\n"
+        "CM = AFFE_MATERIAU(MAILLAGE=MA, AFFE=_F(TOUT='OUI', MATER=MAT))\n"
+        "SOL = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='A_SURFACE', DX=0.0, DY=0.0))\n"
+        "PERIODE = AFFE_CHAR_MECA(MODELE=MO, LIAISON_DDL=({}))\n"
+        "PRESSE = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='B_YMAX', DY=-{}))\n"
+        "CISAILLE = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='B_YMAX', DX={}))\n"
+        "F_N = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0, 3.0, 1.0))\n"
+        "F_T = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 0.0, 3.0, 2.0))\n"
+        "L = DEFI_LIST_REEL(VALE=(0.0, {}))\n"
+        "CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', FROTTEMENT='COULOMB', ALGO_RESO_FROT='{}',\n"
+        "                    ZONE=_F(GROUP_MA_MAIT='A_YMAX', GROUP_MA_ESCL='B_YMIN', SANS_GROUP_NO='COIN', "
+        "CONTACT_INIT='OUI', {}COULOMB={}))\n"
+        "RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, CONTACT=CONT, EXCIT=(_F(CHARGE=SOL), "
+        "_F(CHARGE=PERIODE), "
+        "_F(CHARGE=PRESSE, FONC_MULT=F_N), _F(CHARGE=CISAILLE, FONC_MULT=F_T)), INCREMENT=_F(LIST_INST=L), "
+        "CONVERGENCE=_F(RESI_GLOB_MAXI=1.0e-9, ITER_GLOB_MAXI=30))\n"
+        "RESU = CALC_CHAMP(reuse=RESU, RESULTAT=RESU, FORCE='REAC_NODA')\n"
+        "HAUT = POST_RELEVE_T(ACTION=_F(OPERATION='EXTRACTION', INTITULE='HAUT', RESULTAT=RESU, "
+        "NOM_CHAM='REAC_NODA', GROUP_NO='B_YMAX', RESULTANTE=('DX', 'DY'), TOUT_ORDRE='OUI'))\n"
+        "{}"
+        "FIN()\n",
+        young, nu, periodicTies(mesh), press, shear, list, fixedPoint ? "POINT_FIXE" : "NEWTON", algo, mu,
+        checks(std::vector<double>(instants.begin() + 1, instants.end())));
+  }
+};
+
+// Block A (the rigid plane, every node fixed) below block B, touching; node group COIN = the
+// corner (1, 1) of B's contact surface.
+Mesh blockOnPlane() {
+  Mesh mesh = testing::twoBlocks(CellType::QUAD4, 2, divisions, 0.0);
+  std::vector<NodeId> corner;
+  for (NodeId n : *mesh.nodeGroup("B_YMIN")) {
+    if (mesh.point(n)[0] > 0.5 &&
+        std::find(mesh.nodeGroup("B_XMAX")->begin(), mesh.nodeGroup("B_XMAX")->end(), n) !=
+            mesh.nodeGroup("B_XMAX")->end()) {
+      corner.push_back(n);
+    }
+  }
+  mesh.setNodeGroup("COIN", corner);
+  std::vector<NodeId> slaves;
+  for (NodeId n : *mesh.nodeGroup("B_YMIN")) {
+    if (std::find(corner.begin(), corner.end(), n) == corner.end()) {
+      slaves.push_back(n);
+    }
+  }
+  mesh.setNodeGroup("ESCL", slaves);
+  return mesh;
+}
+
+const std::vector<double> instants{0.0, 0.5, 1.0, 1.25, 1.5, 2.0, 2.5, 3.0};
+
+TEST(ContinuousFriction, BlockPressedThenShearedStickThenSlipNewton) {
+  const Mesh mesh = blockOnPlane();
+  for (double mu : {0.3, 1.0}) {
+    Shear s;
+    s.mu = mu;
+    // both regimes are exercised: mu = 0.3 slides from t = 1.5, mu = 1.0 sticks at t = 2
+    ASSERT_FALSE(s.sticking(1.5) && mu < 0.5);
+    ASSERT_TRUE(s.sticking(2.0) || mu < 0.5);
+    ASSERT_FALSE(s.sticking(3.0));
+    const StudyRun r = runStudy(fmt::format("shear_newton_{:g}", mu), mesh, s.comm(mesh, instants));
+    EXPECT_EQ(r.diagnostic, JobDiagnostic::Ok) << mu;
+  }
+}
+
+TEST(ContinuousFriction, BlockPressedThenShearedStickThenSlipFixedPoint) {
+  const Mesh mesh = blockOnPlane();
+  for (double mu : {0.3, 1.0}) {
+    Shear s;
+    s.mu = mu;
+    s.fixedPoint = true;
+    const StudyRun r = runStudy(fmt::format("shear_point_fixe_{:g}", mu), mesh, s.comm(mesh, instants));
+    EXPECT_EQ(r.diagnostic, JobDiagnostic::Ok) << mu;
+  }
+}
+
+TEST(ContinuousFriction, PenalisedFrictionAddsTheElasticSlipOfThePenalty) {
+  const Mesh mesh = blockOnPlane();
+  for (bool fixedPoint : {false, true}) {
+    Shear s;
+    s.mu = 1.0;
+    s.fixedPoint = fixedPoint;
+    s.penalty = 1e4;
+    const StudyRun r = runStudy(fmt::format("shear_penalised_{}", fixedPoint ? "point_fixe" : "newton"), mesh,
+                                s.comm(mesh, instants));
+    EXPECT_EQ(r.diagnostic, JobDiagnostic::Ok);
+  }
+}
+
+TEST(ContinuousFriction, WhatIsNotDoneIsRefusedNamingTheKeyword) {
+  const Mesh mesh = blockOnPlane();
+  Shear s;
+  std::string comm = s.comm(mesh, {0.0, 1.0});
+  const auto replace = [](std::string text, const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return text.replace(at, from.size(), to);
+  };
+  struct Case {
+    std::string from;
+    std::string to;
+    std::string expected;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"CONTACT_INIT='OUI', ", "CONTACT_INIT='OUI', SEUIL_INIT=-10.0, ", "SEUIL_INIT"},
+           {"CONTACT_INIT='OUI', ", "CONTACT_INIT='OUI', GRAND_GLIS='OUI', ", "GRAND_GLIS='OUI'"},
+           {"CONTACT_INIT='OUI', ", "CONTACT_INIT='OUI', ALGO_CONT='PENALISATION', COEF_PENA_CONT=1e6, ",
+            "ALGO_CONT='PENALISATION'"},
+           {"MODELISATION='D_PLAN'", "MODELISATION='AXIS'", "AXIS"},
+       }) {
+    const StudyRun r = runStudy("refused", mesh, replace(comm, c.from, c.to), true);
+    EXPECT_EQ(r.diagnostic, JobDiagnostic::AbnormalAbort) << c.to;
+    EXPECT_NE(r.message.find("CONTACT_20"), std::string::npos) << r.message;
+    EXPECT_NE(r.message.find(c.expected), std::string::npos) << r.message;
+    EXPECT_NE(r.message.find("not implemented yet"), std::string::npos) << r.message;
+  }
+}
+
+} // namespace
+} // namespace stella::contact
