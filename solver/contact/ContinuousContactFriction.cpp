@@ -47,7 +47,9 @@ char ContinuousContactConstraint::frictionStatus(Eigen::Index row, double slip) 
   if (std::fabs(q) < limit) {
     return 1;
   }
-  return q >= 0.0 ? 2 : 3;
+  // a zero threshold (no pressure yet) slides with no force, whatever the direction: a status
+  // from the sign of a round-off slip would flip-flop
+  return q >= 0.0 || limit <= 0.0 ? 2 : 3;
 }
 
 double ContinuousContactConstraint::tangentialPressure(Eigen::Index row, char s, double slip) const {

@@ -113,6 +113,9 @@ struct Shear {
   double mu = 0.3;
   bool fixedPoint = false;
   double penalty = 0.0; // COEF_PENA_FROT (0: ALGO_FROT='STANDARD')
+  // RESI_FROT of POINT_FIXE: the threshold's relative error, hence that of the sliding force
+  // after the normal pressure changed (from a step to the next); tight for 1e-8 assertions
+  double frictionResidual = 1e-10;
   // LAGS_F1 is along the pairing's tangent, in 2D t1 = (-n_y, n_x) with n the master's outward
   // normal: n = +y for A_YMAX, t1 = -x; the friction on the block's bottom is along -x (it resists
   // the top pulled along +x) = +t1; the force on a slave node is -w mu |LAGS_C| LAGS_F1 t1 (as
@@ -122,12 +125,8 @@ struct Shear {
   static double sheared(double t) { return shear * std::max(0.0, t - 1.0); }
   static double normal(double t) { return normalForce() * std::min(t, 1.0); }
   bool sticking(double t) const { return sheared(t) < onset(); }
-  double force(double t) const {
-    return sticking(t) ? sheared(t) * shearModulus() : mu * normalForce();
-  }
-  double slip(double t) const {
-    return sticking(t) ? 0.0 : sheared(t) - force(t) / shearModulus();
-  }
+  double force(double t) const { return sticking(t) ? sheared(t) * shearModulus() : mu * normalForce(); }
+  double slip(double t) const { return sticking(t) ? 0.0 : sheared(t) - force(t) / shearModulus(); }
 
   std::string checks(const std::vector<double>& instants) const {
     std::string s;
@@ -148,12 +147,17 @@ struct Shear {
     };
     for (double t : instants) {
       table(t, "DY", -normal(t));
-      for (const char* kind : {"MIN", "MAX"}) {
-        resu(t, "CONT_NOEU", "CONT", "ESCL", kind, sticking(t) ? 1.0 : 2.0, 0.0, true);
+      // The penalised stick is not uniform here: the slave node of x = 0 carries its periodic
+      // copy's normal force (multiplier) but only its own penalty spring, so its stick limit is
+      // reached later; asserted: stick (status) well below the onset, everything once every node
+      // slides (beyond twice the onset)
+      const bool uniform = penalty == 0.0 || sheared(t) >= 2.0 * onset();
+      if (uniform || sheared(t) <= 0.5 * onset()) {
+        for (const char* kind : {"MIN", "MAX"}) {
+          resu(t, "CONT_NOEU", "CONT", "ESCL", kind, sticking(t) ? 1.0 : 2.0, 0.0, true);
+        }
       }
-      if (penalty > 0.0 && sticking(t)) {
-        // the penalised stick is not uniform here: the slave node of x = 0 carries its periodic
-        // copy's normal force (multiplier) but only its own penalty spring; only sliding is exact
+      if (!uniform) {
         continue;
       }
       table(t, "DX", force(t));
@@ -188,7 +192,8 @@ struct Shear {
         "F_N = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0, 3.0, 1.0))\n"
         "F_T = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 0.0, 3.0, 2.0))\n"
         "L = DEFI_LIST_REEL(VALE=(0.0, {}))\n"
-        "CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', FROTTEMENT='COULOMB', ALGO_RESO_FROT='{}',\n"
+        "CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', FROTTEMENT='COULOMB', ALGO_RESO_FROT='{}', "
+        "RESI_FROT={},\n"
         "                    ZONE=_F(GROUP_MA_MAIT='A_YMAX', GROUP_MA_ESCL='B_YMIN', SANS_GROUP_NO='COIN', "
         "CONTACT_INIT='OUI', {}COULOMB={}))\n"
         "RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, CONTACT=CONT, EXCIT=(_F(CHARGE=SOL), "
@@ -200,8 +205,8 @@ struct Shear {
         "NOM_CHAM='REAC_NODA', GROUP_NO='B_YMAX', RESULTANTE=('DX', 'DY'), TOUT_ORDRE='OUI'))\n"
         "{}"
         "FIN()\n",
-        young, nu, periodicTies(mesh), press, shear, list, fixedPoint ? "POINT_FIXE" : "NEWTON", algo, mu,
-        checks(std::vector<double>(instants.begin() + 1, instants.end())));
+        young, nu, periodicTies(mesh), press, shear, list, fixedPoint ? "POINT_FIXE" : "NEWTON",
+        frictionResidual, algo, mu, checks(std::vector<double>(instants.begin() + 1, instants.end())));
   }
 };
 
@@ -259,7 +264,7 @@ TEST(ContinuousFriction, PenalisedFrictionAddsTheElasticSlipOfThePenalty) {
   const Mesh mesh = blockOnPlane();
   for (bool fixedPoint : {false, true}) {
     Shear s;
-    s.mu = 1.0;
+    s.mu = 0.3;
     s.fixedPoint = fixedPoint;
     s.penalty = 1e4;
     const StudyRun r = runStudy(fmt::format("shear_penalised_{}", fixedPoint ? "point_fixe" : "newton"), mesh,
@@ -290,7 +295,7 @@ TEST(ContinuousFriction, WhatIsNotDoneIsRefusedNamingTheKeyword) {
            {"MODELISATION='D_PLAN'", "MODELISATION='AXIS'", "AXIS"},
        }) {
     const StudyRun r = runStudy("refused", mesh, replace(comm, c.from, c.to), true);
-    EXPECT_EQ(r.diagnostic, JobDiagnostic::AbnormalAbort) << c.to;
+    EXPECT_FALSE(passed(r)) << c.to;
     EXPECT_NE(r.message.find("CONTACT_20"), std::string::npos) << r.message;
     EXPECT_NE(r.message.find(c.expected), std::string::npos) << r.message;
     EXPECT_NE(r.message.find("not implemented yet"), std::string::npos) << r.message;
