@@ -1,4 +1,5 @@
-// Continuous (LAGS_C) frictionless contact coupled with the Newton iterations of STAT_NON_LINE.
+// Continuous (LAGS_C, LAGS_F1) contact coupled with the Newton iterations of STAT_NON_LINE; the
+// friction part is in ContinuousContactFriction.cpp.
 
 #include "solver/contact/ContinuousContactConstraint.hpp"
 

@@ -17,6 +17,12 @@ double frictionCoefficient(const ContinuousZone& z) {
 
 } // namespace
 
+double ContinuousContactConstraint::trialBase(std::size_t k, const ContinuousZone& z) const {
+  // STANDARD: the multiplier; PENALISATION: the tangential pressure at the start of the step (the
+  // elastic predictor of the penalised stick: the spring keeps the force of the previous steps)
+  return z.frictionPenalised ? (k < lagsFStart_.size() ? lagsFStart_[k] : 0.0) : lagsF_[k];
+}
+
 const ContinuousZone& ContinuousContactConstraint::zoneOfRow(Eigen::Index row) const {
   const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(row)]);
   return definition_->zones[static_cast<std::size_t>(links_[k].zone)].continuous;
@@ -42,7 +48,7 @@ double ContinuousContactConstraint::thresholdPressure(std::size_t k) const {
 char ContinuousContactConstraint::frictionStatus(Eigen::Index row, double slip) const {
   const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(row)]);
   const ContinuousZone& z = zoneOfRow(row);
-  const double q = (z.frictionPenalised ? 0.0 : lagsF_[k]) + frictionCoefficient(z) * slip;
+  const double q = trialBase(k, z) + frictionCoefficient(z) * slip;
   const double limit = coulombOfRow(row) * thresholdPressure(k);
   if (std::fabs(q) < limit) {
     return 1;
@@ -57,7 +63,7 @@ double ContinuousContactConstraint::tangentialPressure(Eigen::Index row, char s,
   const ContinuousZone& z = zoneOfRow(row);
   switch (s) {
   case 1:
-    return (z.frictionPenalised ? 0.0 : lagsF_[k]) + frictionCoefficient(z) * slip;
+    return trialBase(k, z) + frictionCoefficient(z) * slip;
   case 2:
     return coulombOfRow(row) * thresholdPressure(k);
   case 3:

@@ -319,6 +319,51 @@ TEST(ContinuousFriction, PenalisedFrictionAddsTheElasticSlipOfThePenalty) {
   }
 }
 
+// The tangential force DX of table HAUT at INST t, printed by IMPR_TABLE in the message file.
+double printedForce(const std::string& message, double t) {
+  std::istringstream in(message);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream row(line);
+    std::string title;
+    std::string result;
+    std::string field;
+    std::string order;
+    double inst = 0.0;
+    double dx = 0.0;
+    if (row >> title >> result >> field >> order >> inst >> dx && title == "HAUT" &&
+        std::fabs(inst - t) < 1e-12) {
+      return dx;
+    }
+  }
+  ADD_FAILURE() << "no row INST " << t << " in table HAUT";
+  return 0.0;
+}
+
+// ALGO_FROT='PENALISATION' sticking over several steps: the penalty spring keeps its force (the
+// return mapping starts from the tangential pressure of the step's start), so the sticking state at
+// t = 2 (elastic, path-independent) is the same reached in 4 steps from t = 1 as in one.
+TEST(ContinuousFriction, PenalisedStickKeepsItsForceAcrossSteps) {
+  const Mesh mesh = blockOnPlane();
+  Shear s;
+  s.mu = 1.0;
+  s.penalty = 1e3; // the spring in series takes ~30 % of u: the history matters
+  std::vector<double> forces;
+  for (const std::vector<double>& list :
+       {std::vector<double>{0.0, 0.5, 1.0, 1.25, 1.5, 1.75, 2.0}, std::vector<double>{0.0, 1.0, 2.0}}) {
+    std::string comm = s.comm(mesh, list);
+    comm.insert(comm.rfind("FIN()"), "IMPR_TABLE(TABLE=HAUT, UNITE=6, FORMAT_R='E24.16')\n");
+    const StudyRun r = runStudy(fmt::format("penalised_stick_{}", list.size()), mesh, comm);
+    EXPECT_EQ(r.diagnostic, JobDiagnostic::Ok);
+    forces.push_back(printedForce(r.message, 2.0));
+  }
+  const double exact = Shear::sheared(2.0) * shearModulus(); // the exact stick's force
+  EXPECT_NEAR(forces[0], forces[1], 1e-9 * forces[1]);
+  EXPECT_LT(forces[1], 0.9 * exact); // the penalty's compliance shows
+  EXPECT_GT(forces[1], 0.5 * exact);
+  EXPECT_LT(forces[1], s.mu * normalForce()); // sticking
+}
+
 TEST(ContinuousFriction, WhatIsNotDoneIsRefusedNamingTheKeyword) {
   const Mesh mesh = blockOnPlane();
   Shear s;
