@@ -1,4 +1,4 @@
-// Coulomb friction with DEFI_CONTACT FORMULATION='CONTINUE' (D_PLAN), run end to end on command
+// Coulomb friction with DEFI_CONTACT FORMULATION='CONTINUE' (D_PLAN, C_PLAN), run end to end on command
 // files: an elastic block pressed on a rigid plane (a block whose nodes are all fixed) by its top,
 // then sheared by it. The block's sides are periodic (LIAISON_DDL between the nodes of x = 0 and
 // x = 1 at the same height), so the state is uniform and the closed form exact:
@@ -138,7 +138,12 @@ struct Shear {
   // F_N(t): 0 -> 1 on [0, 1], then 1 -> pressEnd at t = 3 (pressed further while sheared)
   double pressEnd = 1.0;
   double pressing(double t) const { return t <= 1.0 ? t : 1.0 + (pressEnd - 1.0) * (t - 1.0) / 2.0; }
-  double normal(double t) const { return normalForce() * pressing(t); }
+  // C_PLAN: sigma_zz = 0, the strip's modulus under eps_xx = 0 is E / (1 - nu^2)
+  std::string modelling = "D_PLAN";
+  double pressedForce() const {
+    return modelling == "C_PLAN" ? young / (1.0 - nu * nu) * press : normalForce();
+  }
+  double normal(double t) const { return pressedForce() * pressing(t); }
   double onset(double t) const { return mu * normal(t) / shearModulus(); }
   static double sheared(double t) { return shear * std::max(0.0, t - 1.0); }
   // the uniform state sticks while G u < mu N(t) (it does not stick again once sliding: the
@@ -201,7 +206,7 @@ struct Shear {
     return fmt::format(
         "DEBUT()\n"
         "MA = LIRE_MAILLAGE(FORMAT='ASTER', UNITE=20)\n"
-        "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='D_PLAN'))\n"
+        "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='{}'))\n"
         "MAT = DEFI_MATERIAU(ELAS=_F(E={}, NU={}))\n"
         "CM = AFFE_MATERIAU(MAILLAGE=MA, AFFE=_F(TOUT='OUI', MATER=MAT))\n"
         "SOL = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='A_SURFACE', DX=0.0, DY=0.0))\n"
@@ -224,8 +229,9 @@ struct Shear {
         "NOM_CHAM='REAC_NODA', GROUP_NO='B_YMAX', RESULTANTE=('DX', 'DY'), TOUT_ORDRE='OUI'))\n"
         "{}"
         "FIN()\n",
-        young, nu, periodicTies(mesh), press, shear, pressEnd, list, fixedPoint ? "POINT_FIXE" : "NEWTON",
-        frictionResidual, algo, mu, checks(std::vector<double>(instants.begin() + 1, instants.end())));
+        modelling, young, nu, periodicTies(mesh), press, shear, pressEnd, list,
+        fixedPoint ? "POINT_FIXE" : "NEWTON", frictionResidual, algo, mu,
+        checks(std::vector<double>(instants.begin() + 1, instants.end())));
   }
 };
 
@@ -276,6 +282,20 @@ TEST(ContinuousFriction, BlockPressedThenShearedStickThenSlipFixedPoint) {
     s.fixedPoint = true;
     const StudyRun r = runStudy(fmt::format("shear_point_fixe_{:g}", mu), mesh, s.comm(mesh, instants));
     EXPECT_EQ(r.diagnostic, JobDiagnostic::Ok) << mu;
+  }
+}
+
+// Plane stress: the same with N = E d L / ((1 - nu^2) H).
+TEST(ContinuousFriction, PlaneStressStickThenSlip) {
+  const Mesh mesh = blockOnPlane();
+  for (bool fixedPoint : {false, true}) {
+    Shear s;
+    s.mu = 0.3;
+    s.modelling = "C_PLAN";
+    s.fixedPoint = fixedPoint;
+    const StudyRun r = runStudy(fmt::format("plane_stress_{}", fixedPoint ? "point_fixe" : "newton"), mesh,
+                                s.comm(mesh, instants));
+    EXPECT_EQ(r.diagnostic, JobDiagnostic::Ok);
   }
 }
 
