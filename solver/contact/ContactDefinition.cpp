@@ -72,6 +72,10 @@ ContinuousZone readContinuousZone(const KeywordTree& z) {
   c.initDistance = z.realOr("DIST_MAXI", -1.0);
   c.adaptation = z.textOr("ADAPTATION", "CYCLAGE");
   c.adaptationAt = z.locationOf("ADAPTATION");
+  c.frictionPenalised = z.textOr("ALGO_FROT", "STANDARD") == "PENALISATION";
+  c.frictionAugmentation = z.realOr("COEF_FROT", 100.0);
+  c.frictionPenalty = z.realOr("COEF_PENA_FROT", 0.0);
+  refuseUnless(z, "GRAND_GLIS", "NON", c.refused);
   refuseUnless(z, "INTEGRATION", "AUTO", c.refused);
   refuseUnless(z, "DIST_POUTRE", "NON", c.refused);
   refuseUnless(z, "DIST_COQUE", "NON", c.refused);
@@ -94,6 +98,9 @@ ContinuousSettings readContinuousSettings(const KeywordTree& kw) {
   c.iterationsPerNode = kw.textOr("ITER_CONT_TYPE", "MAXI") == "MULT";
   c.maxStatusIterations = static_cast<int>(kw.integerOr("ITER_CONT_MAXI", 30));
   c.statusIterationFactor = static_cast<int>(kw.integerOr("ITER_CONT_MULT", 4));
+  c.frictionFixedPoint = kw.textOr("ALGO_RESO_FROT", "NEWTON") == "POINT_FIXE";
+  c.maxFrictionIterations = static_cast<int>(kw.integerOr("ITER_FROT_MAXI", 10));
+  c.frictionResidual = kw.realOr("RESI_FROT", 1e-4);
   refuseUnless(kw, "ALGO_RESO_GEOM", "POINT_FIXE", c.refused);
   if (kw.has("RESI_CONT") && kw.realOr("RESI_CONT", -1.0) != -1.0) {
     c.refused.push_back({"RESI_CONT (other than its default -1)", kw.locationOf("RESI_CONT")});

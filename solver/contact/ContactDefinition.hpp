@@ -49,7 +49,10 @@ struct ContinuousZone {
   double initDistance = -1.0;                      // DIST_MAXI (< 0: no limit)
   std::string adaptation = "CYCLAGE";              // ADAPTATION
   SourceLocation adaptationAt;
-  std::vector<Unimplemented> refused; // INTEGRATION other than AUTO, DIST_*, GLISSIERE...
+  bool frictionPenalised = false;      // ALGO_FROT='PENALISATION' (else STANDARD)
+  double frictionAugmentation = 100.0; // COEF_FROT (ALGO_FROT='STANDARD')
+  double frictionPenalty = 0.0;        // COEF_PENA_FROT (ALGO_FROT='PENALISATION')
+  std::vector<Unimplemented> refused;  // INTEGRATION other than AUTO, DIST_*, GLISSIERE...
 };
 
 // One ZONE occurrence.
@@ -90,6 +93,9 @@ struct ContinuousSettings {
   bool iterationsPerNode = false;             // ITER_CONT_TYPE='MULT'
   int maxStatusIterations = 30;               // ITER_CONT_MAXI
   int statusIterationFactor = 4;              // ITER_CONT_MULT
+  bool frictionFixedPoint = false;            // ALGO_RESO_FROT='POINT_FIXE' (else NEWTON)
+  int maxFrictionIterations = 10;             // ITER_FROT_MAXI (POINT_FIXE)
+  double frictionResidual = 1e-4;             // RESI_FROT
   std::vector<Unimplemented> refused;         // ALGO_RESO_GEOM='NEWTON', RESI_CONT, ...
 };
 

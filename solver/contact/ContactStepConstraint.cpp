@@ -109,13 +109,22 @@ std::unique_ptr<contact::ContactConstraint> makeContinuous(std::shared_ptr<const
                                                            const std::optional<FailurePolicy>& policy,
                                                            const SourceLocation& at) {
   refuse(def->settings.continuous.refused);
-  if (def->hasFriction()) {
-    notImplemented("FROTTEMENT='COULOMB' with FORMULATION='CONTINUE'", def->settings.frictionAt,
-                   "frictionless continuous contact (FROTTEMENT='SANS') is available; friction is available "
-                   "with FORMULATION='DISCRETE', ALGO_CONT='PENALISATION'");
+  const fem::Modelling modelling = system.model().modelling;
+  if (def->hasFriction() &&
+      (modelling == fem::Modelling::ThreeD || modelling == fem::Modelling::Axisymmetric)) {
+    notImplemented(fmt::format("FROTTEMENT='COULOMB' with FORMULATION='CONTINUE' on a {} model",
+                               fem::modellingName(modelling)),
+                   def->settings.frictionAt,
+                   "continuous friction is implemented for D_PLAN and C_PLAN models; in 3D or AXIS use "
+                   "FORMULATION='DISCRETE', ALGO_CONT='PENALISATION' with friction");
   }
   for (const auto& z : def->zones) {
     refuse(z.continuous.refused);
+    if (def->hasFriction() && z.algorithm == ContactAlgorithm::ContinuePenalty) {
+      notImplemented("FROTTEMENT='COULOMB' with ALGO_CONT='PENALISATION' and FORMULATION='CONTINUE'",
+                     z.location,
+                     "use ALGO_CONT='STANDARD' (COEF_CONT) with ALGO_FROT='STANDARD' or 'PENALISATION'");
+    }
     if (z.algorithm == ContactAlgorithm::Lac) {
       notImplemented("ALGO_CONT='LAC' with FORMULATION='CONTINUE'", z.location,
                      "use ALGO_CONT='STANDARD' or 'PENALISATION'");

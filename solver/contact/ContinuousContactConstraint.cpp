@@ -1,4 +1,5 @@
-// Continuous (LAGS_C) frictionless contact coupled with the Newton iterations of STAT_NON_LINE.
+// Continuous (LAGS_C, LAGS_F1) contact coupled with the Newton iterations of STAT_NON_LINE; the
+// friction part is in ContinuousContactFriction.cpp.
 
 #include "solver/contact/ContinuousContactConstraint.hpp"
 
@@ -120,6 +121,9 @@ void ContinuousContactConstraint::paired() {
   lagsCStart_.resize(links_.size(), 0.0);
   contactLink_.resize(links_.size(), 0);
   status_.resize(links_.size(), 0);
+  lagsF_.resize(links_.size(), 0.0);
+  lagsFStart_.resize(links_.size(), 0.0);
+  threshold_.resize(links_.size(), 0.0);
   if (weightLink_.size() != links_.size()) {
     computeWeights(); // once: on the initial configuration, and links are the slave nodes
   }
@@ -130,6 +134,7 @@ void ContinuousContactConstraint::paired() {
   for (std::size_t k = 0; k < links_.size(); ++k) {
     if (hasRow[k] == 0) {
       lagsC_[k] = 0.0; // not paired (or not resolved): no contact pressure
+      lagsF_[k] = 0.0;
     }
   }
   const auto m = static_cast<Eigen::Index>(rows_.link.size());
@@ -158,15 +163,19 @@ bool ContinuousContactConstraint::penalised(Eigen::Index row) const {
 std::vector<char> ContinuousContactConstraint::statusAt(const Eigen::VectorXd& u) const {
   std::vector<char> s(links_.size(), 0);
   const Eigen::VectorXd g = gapsAt(u);
+  const Eigen::VectorXd slip = friction() ? slipsAt(u) : Eigen::VectorXd();
   for (Eigen::Index i = 0; i < g.size(); ++i) {
     const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(i)]);
     if (k < frozen_.size() && frozen_[k] >= 0) {
       s[k] = static_cast<char>(frozen_[k]); // a cycling node (ADAPTATION='CYCLAGE')
-      continue;
+    } else {
+      // a node of zero weight (on the axis of an AXIS model) carries no contact force
+      const double indicator = penalised(i) ? g(i) : lagsC_[k] + coefficient_(i) * g(i);
+      s[k] = indicator < 0.0 && weight_(i) > 0.0 ? 1 : 0;
     }
-    // a node of zero weight (on the axis of an AXIS model) carries no contact force
-    const double indicator = penalised(i) ? g(i) : lagsC_[k] + coefficient_(i) * g(i);
-    s[k] = indicator < 0.0 && weight_(i) > 0.0 ? 1 : 0;
+    if (s[k] != 0 && friction()) {
+      s[k] = frictionStatus(i, slip(i));
+    }
   }
   return s;
 }
@@ -180,7 +189,9 @@ const std::vector<char>& ContinuousContactConstraint::currentStatus(const Eigen:
 
 void ContinuousContactConstraint::beginStep(const Eigen::VectorXd& u, double time) {
   lagsC_ = lagsCStart_; // a step cut restarts from the multipliers of its start
+  lagsF_ = lagsFStart_;
   ContactConstraint::beginStep(u, time);
+  resetFrictionStep();
   statusIterations_ = 0;
   changes_.assign(links_.size(), 0);
   frozen_.assign(links_.size(), -1);
@@ -222,6 +233,7 @@ void ContinuousContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::Vec
   const std::vector<char>& status = currentStatus(u);
   const Eigen::VectorXd g = gapsAt(u);
   const SparseRows& a = rows_.problem.A;
+  const Eigen::VectorXd slip = friction() ? slipsAt(u) : Eigen::VectorXd();
   int active = 0;
   double penetration = 0.0;
   for (Eigen::Index i = 0; i < m; ++i) {
@@ -247,6 +259,9 @@ void ContinuousContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::Vec
         }
       }
     }
+    if (friction()) {
+      addFrictionForces(i, status[k], slip(i), forces, tangent);
+    }
   }
   noteActive_ = active;
   notePenetration_ = penetration;
@@ -261,17 +276,37 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
     return;
   }
   lastStatus_ = status;
-  // Rows in contact with an augmented Lagrangian: their multipliers solve the Schur complement.
-  std::vector<Eigen::Index> contact;
+  recordThreshold();
+  // The multipliers solving the Schur complement: the normal ones of the augmented-Lagrangian rows
+  // in contact and (ALGO_FROT='STANDARD') the tangential ones of the sticking rows. Each has its
+  // constraint row B (A, or T1: the gap, or the slip, vanishes) and its force column C (the
+  // derivative of the forces with respect to it): C = B except for the normal multiplier of a
+  // node sliding with ALGO_RESO_FROT='NEWTON', whose friction force follows it (A - sign mu T1).
+  struct Multiplier {
+    Eigen::Index row;
+    bool tangential;
+    double frictionCoupling; // the coefficient of T1 in C (normal multipliers)
+  };
+  const Eigen::VectorXd slip = friction() ? slipsAt(u) : Eigen::VectorXd();
+  const bool newtonFriction = friction() && !definition_->settings.continuous.frictionFixedPoint;
+  std::vector<Multiplier> contact;
   for (Eigen::Index i = 0; i < m; ++i) {
     const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(i)]);
     if (penalised(i)) {
       continue;
     }
-    if (status[k] != 0) {
-      contact.push_back(i);
-    } else {
+    if (status[k] == 0) {
       lagsC_[k] = 0.0; // -(w / rho) lambda = 0
+      lagsF_[k] = 0.0;
+      continue;
+    }
+    double coupling = 0.0;
+    if (newtonFriction && status[k] >= 2 && lagsC_[k] < 0.0) {
+      coupling = -(status[k] == 2 ? 1.0 : -1.0) * coulombOfRow(i);
+    }
+    contact.push_back({i, false, coupling});
+    if (friction() && status[k] == 1 && !zoneOfRow(i).frictionPenalised) {
+      contact.push_back({i, true, 0.0});
     }
   }
   addContactIterations(1);
@@ -279,22 +314,38 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
     return;
   }
   const SparseRows& a = rows_.problem.A;
+  const SparseRows* t1 = friction() ? &rows_.friction.T1 : nullptr;
+  const auto constraintRow = [&](const Multiplier& c) -> const SparseRows& { return c.tangential ? *t1 : a; };
+  // Adds factor x C_j into the dense vector v (the force column of multiplier j).
+  const auto addColumn = [&](const Multiplier& c, double factor, auto&& v) {
+    for (SparseRows::InnerIterator it(constraintRow(c), c.row); it; ++it) {
+      v(it.col()) += factor * it.value();
+    }
+    if (c.frictionCoupling != 0.0) {
+      for (SparseRows::InnerIterator it(*t1, c.row); it; ++it) {
+        v(it.col()) += factor * c.frictionCoupling * it.value();
+      }
+    }
+  };
+  bool symmetricSchur = true;
+  for (const auto& c : contact) {
+    symmetricSchur = symmetricSchur && c.frictionCoupling == 0.0;
+  }
   const auto mc = static_cast<Eigen::Index>(contact.size());
   const Eigen::Index n = ddu.size();
-  // S = A_c K^-1 A_c^T by blocks of columns (one backend call each): n x block doubles at a time.
+  // S = B K^-1 C^T by blocks of columns (one backend call each): n x block doubles at a time.
   constexpr Eigen::Index block = 64;
   Eigen::MatrixXd s = Eigen::MatrixXd::Zero(mc, mc);
   for (Eigen::Index first = 0; first < mc; first += block) {
     const Eigen::Index cols = std::min(block, mc - first);
     Eigen::MatrixXd x = Eigen::MatrixXd::Zero(n, cols);
     for (Eigen::Index j = 0; j < cols; ++j) {
-      for (SparseRows::InnerIterator it(a, contact[static_cast<std::size_t>(first + j)]); it; ++it) {
-        x(it.col(), j) = it.value();
-      }
+      addColumn(contact[static_cast<std::size_t>(first + j)], 1.0, x.col(j));
     }
-    solver.solveHomogeneous(x); // K^-1 A_c^T
+    solver.solveHomogeneous(x); // K^-1 C^T
     for (Eigen::Index i = 0; i < mc; ++i) {
-      for (SparseRows::InnerIterator it(a, contact[static_cast<std::size_t>(i)]); it; ++it) {
+      const Multiplier& c = contact[static_cast<std::size_t>(i)];
+      for (SparseRows::InnerIterator it(constraintRow(c), c.row); it; ++it) {
         s.row(i).segment(first, cols) += it.value() * x.row(it.col());
       }
     }
@@ -302,44 +353,41 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
   const Eigen::VectorXd g = gapsAt(u);
   Eigen::VectorXd rhs(mc);
   for (Eigen::Index i = 0; i < mc; ++i) {
-    const Eigen::Index row = contact[static_cast<std::size_t>(i)];
-    double adu = 0.0;
-    for (SparseRows::InnerIterator it(a, row); it; ++it) {
-      adu += it.value() * ddu(it.col());
+    const Multiplier& c = contact[static_cast<std::size_t>(i)];
+    double bdu = 0.0;
+    for (SparseRows::InnerIterator it(constraintRow(c), c.row); it; ++it) {
+      bdu += it.value() * ddu(it.col());
     }
-    rhs(i) = g(row) + adu;
+    rhs(i) = (c.tangential ? slip(c.row) : g(c.row)) + bdu;
   }
-  const Eigen::LDLT<Eigen::MatrixXd> ldlt(0.5 * (s + s.transpose()));
-  const Eigen::VectorXd d = ldlt.vectorD();
-  const double scale = d.cwiseAbs().maxCoeff();
-  for (Eigen::Index p = 0; p < mc; ++p) {
-    if (!(std::fabs(d(p)) > 1e-12 * scale)) {
-      const Eigen::PermutationMatrix<Eigen::Dynamic> perm(ldlt.transpositionsP());
-      const Eigen::PermutationMatrix<Eigen::Dynamic> inverse(perm.inverse());
-      const Eigen::Index row = contact[static_cast<std::size_t>(inverse.indices()(p))];
-      const auto& l = links_[static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(row)])];
-      throw UserError(
-          Diagnostic::fatal(
-              "CONTACT_11",
-              fmt::format("the contact conditions are redundant at INST {}: the gap of slave node "
-                          "{} (zone {}) cannot move independently of the other nodes in contact",
-                          time_, definition_->mesh->nodeName(l.slave), l.zone + 1),
-              definition_->zones[static_cast<std::size_t>(l.zone)].location)
-              .withNote(
-                  "a slave node also held by DDL_IMPO or a symmetry condition in the normal direction, or "
-                  "two zones constraining the same node, make the conditions redundant (notice §4.7): "
-                  "exclude it with SANS_GROUP_NO"));
+  Eigen::VectorXd y;
+  if (symmetricSchur) {
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(0.5 * (s + s.transpose()));
+    const Eigen::VectorXd d = ldlt.vectorD();
+    const double scale = d.cwiseAbs().maxCoeff();
+    for (Eigen::Index p = 0; p < mc; ++p) {
+      if (!(std::fabs(d(p)) > 1e-12 * scale)) {
+        const Eigen::PermutationMatrix<Eigen::Dynamic> perm(ldlt.transpositionsP());
+        const Eigen::PermutationMatrix<Eigen::Dynamic> inverse(perm.inverse());
+        redundant(contact[static_cast<std::size_t>(inverse.indices()(p))].row);
+      }
     }
+    y = ldlt.solve(rhs); // w dlambda
+  } else {
+    // ALGO_RESO_FROT='NEWTON' with sliding nodes: the only non-symmetric factorisation (dense, of
+    // the multipliers in contact); K itself stays symmetric.
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(s);
+    if (!lu.isInvertible()) {
+      redundant(contact.front().row);
+    }
+    y = lu.solve(rhs);
   }
-  const Eigen::VectorXd y = ldlt.solve(rhs); // w dlambda
   Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
   for (Eigen::Index j = 0; j < mc; ++j) {
-    const Eigen::Index row = contact[static_cast<std::size_t>(j)];
-    for (SparseRows::InnerIterator it(a, row); it; ++it) {
-      f(it.col()) += it.value() * y(j);
-    }
-    const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(row)]);
-    lagsC_[k] += y(j) / weight_(row);
+    const Multiplier& c = contact[static_cast<std::size_t>(j)];
+    addColumn(c, y(j), f);
+    const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(c.row)]);
+    (c.tangential ? lagsF_[k] : lagsC_[k]) += y(j) / weight_(c.row);
   }
   Eigen::VectorXd dx;
   Eigen::VectorXd dy;
@@ -348,6 +396,29 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
   if (dy.size() == dlambda.size()) {
     dlambda -= dy;
   }
+  if (friction()) {
+    for (const auto& c : contact) {
+      const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(c.row)]);
+      if (!c.tangential && status[k] >= 2) {
+        lagsF_[k] = tangentialPressure(c.row, status[k], 0.0); // sign(q) mu |lambda_n| after the update
+      }
+    }
+  }
+}
+
+void ContinuousContactConstraint::redundant(Eigen::Index row) const {
+  const auto& l = links_[static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(row)])];
+  throw UserError(
+      Diagnostic::fatal(
+          "CONTACT_11",
+          fmt::format("the contact conditions are redundant at INST {}: the gap{} of slave node "
+                      "{} (zone {}) cannot move independently of the other nodes in contact",
+                      time_, friction() ? " or slip" : "", definition_->mesh->nodeName(l.slave), l.zone + 1),
+          definition_->zones[static_cast<std::size_t>(l.zone)].location)
+          .withNote(
+              "a slave node also held by DDL_IMPO or a symmetry condition in the normal (with friction: "
+              "or tangential) direction, or two zones constraining the same node, make the conditions "
+              "redundant (notice §4.7): exclude it with SANS_GROUP_NO"));
 }
 
 bool ContinuousContactConstraint::acceptResolution(const Eigen::VectorXd& u) {
@@ -357,7 +428,7 @@ bool ContinuousContactConstraint::acceptResolution(const Eigen::VectorXd& u) {
   const bool newton = c.statusLoop == StatusLoop::Newton;
   const std::vector<char>& used = newton ? lastStatus_ : status_;
   if (rows_.link.empty() || now == used || (newton && lastStatus_.empty() && now == status_)) {
-    return true;
+    return !friction() || acceptFriction(u);
   }
   int changed = 0;
   int frozen = 0;
@@ -406,6 +477,14 @@ std::string ContinuousContactConstraint::iterationNote() const {
   for (std::size_t k = 0; k < status_.size() && k < lastStatus_.size(); ++k) {
     changes += status_[k] != lastStatus_[k] ? 1 : 0;
   }
+  if (friction()) {
+    int sticking = 0;
+    for (char st : status_) {
+      sticking += st == 1 ? 1 : 0;
+    }
+    return fmt::format("CONT {} act. ({} stick) {} chg pene {:.2e}", noteActive_, sticking, changes,
+                       notePenetration_);
+  }
   return fmt::format("CONT {} act. {} chg pene {:.2e}", noteActive_, changes, notePenetration_);
 }
 
@@ -416,6 +495,7 @@ std::string ContinuousContactConstraint::continuationNote() const {
 std::vector<LinkState> ContinuousContactConstraint::resolvedStates(const Eigen::VectorXd& u) const {
   const Eigen::VectorXd g = gapsAt(u);
   const std::vector<char> status = statusAt(u);
+  const Eigen::VectorXd slip = friction() ? slipsAt(u) : Eigen::VectorXd();
   std::vector<LinkState> states(rows_.link.size());
   for (std::size_t i = 0; i < states.size(); ++i) {
     const auto row = static_cast<Eigen::Index>(i);
@@ -424,6 +504,12 @@ std::vector<LinkState> ContinuousContactConstraint::resolvedStates(const Eigen::
     states[i].gap = g(row);
     states[i].normalForce = -weight_(row) * lambda;
     states[i].status = status[k] != 0 ? LinkStatus::Sliding : LinkStatus::Open;
+    if (friction() && status[k] != 0) {
+      const double s = slip(row);
+      states[i].slip[0] = s;
+      states[i].friction[0] = -weight_(row) * tangentialPressure(row, status[k], s);
+      states[i].status = status[k] == 1 ? LinkStatus::Sticking : LinkStatus::Sliding;
+    }
   }
   return states;
 }
@@ -434,8 +520,15 @@ void ContinuousContactConstraint::accepted(const std::vector<LinkState>& rowStat
     const double w = weight_(static_cast<Eigen::Index>(i));
     lagsC_[k] = w > 0.0 ? -rowStates[i].normalForce / w : 0.0;
     contactLink_[k] = rowStates[i].status != LinkStatus::Open ? 1 : 0;
+    if (friction()) {
+      lagsF_[k] = w > 0.0 ? -rowStates[i].friction[0] / w : 0.0;
+      // the next step starts sliding the same way, or sticking
+      const char sliding = lagsF_[k] >= 0.0 ? 2 : 3;
+      contactLink_[k] = rowStates[i].status == LinkStatus::Sliding ? sliding : contactLink_[k];
+    }
   }
   lagsCStart_ = lagsC_;
+  lagsFStart_ = lagsF_;
   firstStep_ = false;
 }
 
@@ -451,6 +544,9 @@ void ContinuousContactConstraint::store(ResultStep& step) const {
   }
   std::vector<std::string> components = depl.components();
   components.push_back("LAGS_C");
+  if (friction()) {
+    components.push_back("LAGS_F1");
+  }
   const std::size_t nodes = depl.entityCount();
   const std::size_t c0 = depl.componentCount();
   auto out = std::make_shared<Field>(Field::nodal(depl.quantity(), components, nodes));
@@ -470,6 +566,14 @@ void ContinuousContactConstraint::store(ResultStep& step) const {
     const auto n = static_cast<std::size_t>(links_[k].slave);
     out->value(n, c0) = k < lagsC_.size() ? lagsC_[k] : 0.0;
     out->setDefined(n, c0);
+    if (friction()) {
+      // LAGS_F1: the tangential pressure over the Coulomb threshold mu |LAGS_C| (|LAGS_F1| <= 1, 1
+      // sliding), along the pairing's tangent; 0 out of contact
+      const double mu = definition_->zones[static_cast<std::size_t>(links_[k].zone)].coulomb;
+      const double limit = k < lagsC_.size() ? mu * std::max(0.0, -lagsC_[k]) : 0.0;
+      out->value(n, c0 + 1) = limit > 0.0 ? lagsF_[k] / limit : 0.0;
+      out->setDefined(n, c0 + 1);
+    }
   }
   step.fields["DEPL"] = out;
 }

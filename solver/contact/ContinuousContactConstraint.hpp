@@ -1,7 +1,7 @@
 #pragma once
-// Continuous contact in STAT_NON_LINE (DEFI_CONTACT FORMULATION='CONTINUE', frictionless, notice
-// §3.1.3, §3.2.3): the unknowns LAGS_C (contact pressure, negative in compression, code_aster's
-// sign) on the slave nodes, the contact term integrated on the slave cells with their nodes as
+// Continuous contact in STAT_NON_LINE (DEFI_CONTACT FORMULATION='CONTINUE', notice §3.1.3, §3.2.3;
+// Coulomb friction in 2D, §3.3.3, below): the unknowns LAGS_C (contact pressure, negative in compression,
+// code_aster's sign) on the slave nodes, the contact term integrated on the slave cells with their nodes as
 // integration points (INTEGRATION='AUTO', "méthode des noeuds": node i weighs
 // w_i = W_i |J(xi_i)| (x r_i in AXIS, per radian), W_i the Newton-Cotes weight of the reference
 // cell; J on the initial configuration, as the small-strain stresses), each node paired on the master surface
@@ -27,6 +27,17 @@
 //   current (u, lambda) (generalised Newton); a step converges when the status no longer changes.
 //   'POINT_FIXE': the status is frozen during the Newton iterations and re-evaluated at their
 //   convergence (at most ITER_CONT_MAXI, or ITER_CONT_MULT x slave nodes, status loops).
+//   Friction (FROTTEMENT='COULOMB', D_PLAN/C_PLAN, ContinuousContactFriction.cpp): the tangential
+//   pressure lambda_t of each slave node (LAGS_F1 = lambda_t / (mu |LAGS_C|)), the slip s = T1 (u -
+//   u_start) since the start of the step. Indicator q = lambda_t + rho_t s (ALGO_FROT='STANDARD',
+//   rho_t = COEF_FROT) or lambda_t,start + rho_t s ('PENALISATION', COEF_PENA_FROT: the return
+//   mapping of a penalty spring, lambda_t,start that of the step's start); threshold mu |lambda_n|
+//   (ALGO_RESO_FROT='NEWTON': the current LAGS_C; 'POINT_FIXE': the LAGS_C of the last friction
+//   loop). Stick (|q| < threshold): STANDARD adds the row s = 0 to the Schur complement (tangent
+//   rho_t w T1^T T1), PENALISATION the force -w q T1 (same tangent); slip: the force
+//   -w sign(q) mu |lambda_n| T1, which with NEWTON depends on lambda_n: the column of that node's
+//   normal multiplier becomes A - sign(q) mu T1 and the (small, dense) Schur complement is
+//   non-symmetric (LU); the factorised K stays symmetric.
 //   CONTACT_INIT: the status of the first step (OUI: every paired node; INTERPENETRE: the nodes
 //   with g < 0, within DIST_MAXI when given; NON: none).
 
@@ -74,6 +85,28 @@ private:
   // The status used now: re-evaluated (NEWTON) or frozen (POINT_FIXE).
   const std::vector<char>& currentStatus(const Eigen::VectorXd& u);
   void computeWeights();
+  [[noreturn]] void redundant(Eigen::Index row) const; // CONTACT_11 naming the row's slave node
+  // Friction (ContinuousContactFriction.cpp). Status codes per link: 0 open, 1 contact (and
+  // sticking with friction), 2 sliding with sign(q) > 0, 3 sliding with sign(q) < 0.
+  bool friction() const { return definition_->hasFriction(); }
+  const ContinuousZone& zoneOfRow(Eigen::Index row) const;
+  double coulombOfRow(Eigen::Index row) const;
+  Eigen::VectorXd slipsAt(const Eigen::VectorXd& u) const;
+  // The threshold pressure |lambda_n| of link k (NEWTON: current LAGS_C; POINT_FIXE: frozen).
+  double thresholdPressure(std::size_t k) const;
+  // lambda_t of the indicator q = base + rho_t s (STANDARD: the multiplier; PENALISATION: the
+  // tangential pressure at the start of the step)
+  double trialBase(std::size_t k, const ContinuousZone& z) const;
+  char frictionStatus(Eigen::Index row, double slip) const;
+  // The tangential pressure of a row in contact with status s at slip `slip`.
+  double tangentialPressure(Eigen::Index row, char s, double slip) const;
+  void addFrictionForces(Eigen::Index row, char s, double slip, Eigen::VectorXd& forces,
+                         std::vector<Eigen::Triplet<double>>* tangent) const;
+  // The friction loop of POINT_FIXE and the RESI_FROT test: false while the threshold moves.
+  bool acceptFriction(const Eigen::VectorXd& u);
+  void resetFrictionStep();
+  void recordThreshold(); // |LAGS_C| before a correction (the RESI_FROT test of NEWTON)
+  bool withFrictionRows() const override { return definition_->hasFriction(); }
 
   fem::Modelling modelling_;
   Eigen::VectorXd weight_;         // per row
@@ -90,6 +123,11 @@ private:
   std::vector<int> changes_; // per link: status changes in the step
   std::vector<int> frozen_;  // per link: -1, or the status frozen by CYCLAGE
   std::string continuation_;
+  std::vector<double> lagsF_;         // per link: tangential pressure lambda_t
+  std::vector<double> lagsFStart_;    // per link, at the start of the step
+  std::vector<double> threshold_;     // per link: frozen threshold pressure (POINT_FIXE)
+  std::vector<double> lastThreshold_; // per link: |LAGS_C| at the previous correction (RESI_FROT)
+  int frictionIterations_ = 0;
 };
 
 } // namespace stella::contact

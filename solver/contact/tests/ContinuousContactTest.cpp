@@ -283,7 +283,7 @@ TEST(ContinuousContact, WhatIsNotImplementedIsRefusedNamingTheKeyword) {
     std::string zone;
     std::string named;
   } cases[] = {
-      {", FROTTEMENT='COULOMB'", ", COULOMB=0.2", "FROTTEMENT='COULOMB'"},
+      {", FROTTEMENT='COULOMB'", ", COULOMB=0.2, SEUIL_INIT=1.0", "SEUIL_INIT"},
       {"", ", INTEGRATION='GAUSS'", "INTEGRATION='GAUSS'"},
       {"", ", ADAPTATION='ADAPT_COEF'", "ADAPTATION='ADAPT_COEF'"},
       {", ALGO_RESO_GEOM='NEWTON'", "", "ALGO_RESO_GEOM='NEWTON'"},
