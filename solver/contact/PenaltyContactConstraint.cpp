@@ -37,6 +37,7 @@ std::string PenaltyContactConstraint::resolutionEffects() const {
 
 void PenaltyContactConstraint::beginStep(const Eigen::VectorXd& u, double time) {
   ContactConstraint::beginStep(u, time); // pairs (or not) and calls paired()
+  closedThisStep_.assign(static_cast<std::size_t>(rows_.problem.A.rows()), 0);
 }
 
 void PenaltyContactConstraint::updateParameters() {
@@ -172,10 +173,16 @@ void PenaltyContactConstraint::correct(const Eigen::VectorXd& u, Eigen::VectorXd
   }
   const Eigen::VectorXd gap = gapsAt(u);
   const Eigen::VectorXd moved = gap + rows_.problem.A * ddu;
+  if (closedThisStep_.size() != static_cast<std::size_t>(m)) {
+    closedThisStep_.assign(static_cast<std::size_t>(m), 0); // paired again: a new set of rows
+  }
   std::vector<Eigen::Index> open;
   bool entering = false;
   for (Eigen::Index i = 0; i < m; ++i) {
-    if (!(gap(i) < 0.0) && !rows_.problem.isBilateral(i)) {
+    char& closed = closedThisStep_[static_cast<std::size_t>(i)];
+    if (gap(i) < 0.0) {
+      closed = 1;
+    } else if (closed != 0 && !rows_.problem.isBilateral(i)) {
       open.push_back(i);
       entering = entering || moved(i) < 0.0;
     }

@@ -51,8 +51,11 @@ TEST(PenaltyFrictionAdvice, TheFrictionTangentConverges) {
   const auto resu = run->result("RESU");
   ASSERT_NE(resu, nullptr);
   ASSERT_EQ(resu->steps.size(), 5U); // no cut
+  // 5 Newton iterations per sliding step when every link entering contact was condensed, 6 since a
+  // link closing for the first time in a step takes the penalised law at the next iterate (the
+  // condensation is kept for links that reopen, where the cycling was): bounded, not cycling.
   for (const auto& step : resu->steps) {
-    EXPECT_LE(step.parameters.count("ITER_GLOB") ? step.parameters.at("ITER_GLOB") : 0.0, 5.0) << step.time;
+    EXPECT_LE(step.parameters.count("ITER_GLOB") ? step.parameters.at("ITER_GLOB") : 0.0, 6.0) << step.time;
   }
 }
 
