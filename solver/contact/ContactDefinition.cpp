@@ -65,15 +65,23 @@ void refusePresent(const KeywordTree& kw, const std::string& name, std::vector<U
 
 ContinuousZone readContinuousZone(const KeywordTree& z) {
   ContinuousZone c;
-  c.augmentation = z.realOr("COEF_CONT", 100.0);
+  if (z.has("COEF_CONT")) { // ALGO_CONT='STANDARD' only
+    c.augmentation = z.real("COEF_CONT");
+  }
   c.penalty = z.realOr("COEF_PENA_CONT", 0.0);
-  const std::string init = z.textOr("CONTACT_INIT", "INTERPENETRE");
+  const std::string init = z.text("CONTACT_INIT");
   c.init = init == "OUI" ? ContactInit::Yes : init == "NON" ? ContactInit::No : ContactInit::Interpenetrated;
   c.initDistance = z.realOr("DIST_MAXI", -1.0);
-  c.adaptation = z.textOr("ADAPTATION", "CYCLAGE");
+  if (z.has("ADAPTATION")) { // not in a LAC zone
+    c.adaptation = z.text("ADAPTATION");
+  }
   c.adaptationAt = z.locationOf("ADAPTATION");
-  c.frictionPenalised = z.textOr("ALGO_FROT", "STANDARD") == "PENALISATION";
-  c.frictionAugmentation = z.realOr("COEF_FROT", 100.0);
+  if (z.has("ALGO_FROT")) { // FROTTEMENT='COULOMB'
+    c.frictionPenalised = z.text("ALGO_FROT") == "PENALISATION";
+  }
+  if (z.has("COEF_FROT")) { // ALGO_FROT='STANDARD'
+    c.frictionAugmentation = z.real("COEF_FROT");
+  }
   c.frictionPenalty = z.realOr("COEF_PENA_FROT", 0.0);
   refuseUnless(z, "GRAND_GLIS", "NON", c.refused);
   refuseUnless(z, "INTEGRATION", "AUTO", c.refused);
@@ -85,7 +93,7 @@ ContinuousZone readContinuousZone(const KeywordTree& z) {
   refusePresent(z, "PENE_MAXI", c.refused);
   refusePresent(z, "SEUIL_INIT", c.refused);
   refusePresent(z, "SANS_GROUP_NO_FR", c.refused);
-  if (z.realOr("TOLE_INTERP", 0.0) != 0.0) {
+  if (z.has("TOLE_INTERP") && z.real("TOLE_INTERP") != 0.0) {
     c.refused.push_back({"TOLE_INTERP (other than its default 0)", z.locationOf("TOLE_INTERP")});
   }
   return c;
@@ -93,19 +101,27 @@ ContinuousZone readContinuousZone(const KeywordTree& z) {
 
 ContinuousSettings readContinuousSettings(const KeywordTree& kw) {
   ContinuousSettings c;
-  c.statusLoop =
-      kw.textOr("ALGO_RESO_CONT", "NEWTON") == "POINT_FIXE" ? StatusLoop::FixedPoint : StatusLoop::Newton;
-  c.iterationsPerNode = kw.textOr("ITER_CONT_TYPE", "MAXI") == "MULT";
-  c.maxStatusIterations = static_cast<int>(kw.integerOr("ITER_CONT_MAXI", 30));
-  c.statusIterationFactor = static_cast<int>(kw.integerOr("ITER_CONT_MULT", 4));
-  c.frictionFixedPoint = kw.textOr("ALGO_RESO_FROT", "NEWTON") == "POINT_FIXE";
-  c.maxFrictionIterations = static_cast<int>(kw.integerOr("ITER_FROT_MAXI", 10));
-  c.frictionResidual = kw.realOr("RESI_FROT", 1e-4);
+  c.statusLoop = kw.text("ALGO_RESO_CONT") == "POINT_FIXE" ? StatusLoop::FixedPoint : StatusLoop::Newton;
+  if (c.statusLoop == StatusLoop::FixedPoint) { // the keywords of the status loop's block
+    c.iterationsPerNode = kw.text("ITER_CONT_TYPE") == "MULT";
+    if (c.iterationsPerNode) {
+      c.statusIterationFactor = static_cast<int>(kw.integer("ITER_CONT_MULT"));
+    } else {
+      c.maxStatusIterations = static_cast<int>(kw.integer("ITER_CONT_MAXI"));
+    }
+  }
+  if (kw.has("ALGO_RESO_FROT")) { // FROTTEMENT='COULOMB'
+    c.frictionFixedPoint = kw.text("ALGO_RESO_FROT") == "POINT_FIXE";
+    c.frictionResidual = kw.real("RESI_FROT");
+    if (c.frictionFixedPoint) {
+      c.maxFrictionIterations = static_cast<int>(kw.integer("ITER_FROT_MAXI"));
+    }
+  }
   refuseUnless(kw, "ALGO_RESO_GEOM", "POINT_FIXE", c.refused);
-  if (kw.has("RESI_CONT") && kw.realOr("RESI_CONT", -1.0) != -1.0) {
+  if (kw.real("RESI_CONT") != -1.0) {
     c.refused.push_back({"RESI_CONT (other than its default -1)", kw.locationOf("RESI_CONT")});
   }
-  if (kw.integerOr("CONT_STAT_ELAS", 0) != 0) {
+  if (kw.integer("CONT_STAT_ELAS") != 0) {
     c.refused.push_back({"CONT_STAT_ELAS > 0", kw.locationOf("CONT_STAT_ELAS")});
   }
   refuseUnless(kw, "STOP_INTERP", "NON", c.refused);

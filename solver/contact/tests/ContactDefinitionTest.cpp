@@ -80,8 +80,12 @@ TEST(ContactDefinition, ReadsZonesAndGlobalSettings) {
 }
 
 TEST(ContactDefinition, KeepsContinueFormulation) {
-  auto kw = definitionTree({zoneTree("A_YMAX", "B_YMIN", {simple("ALGO_CONT", {Value("LAC")})})},
-                           {simple("FORMULATION", {Value("CONTINUE")})});
+  // A hand-built tree holds the catalogue's defaults that validation would give a CONTINUE definition.
+  auto kw = definitionTree(
+      {zoneTree("A_YMAX", "B_YMIN",
+                {simple("ALGO_CONT", {Value("LAC")}), simple("CONTACT_INIT", {Value("OUI")})})},
+      {simple("FORMULATION", {Value("CONTINUE")}), simple("ALGO_RESO_CONT", {Value("NEWTON")}),
+       simple("RESI_CONT", {Value(-1.0)}), simple("CONT_STAT_ELAS", {Value(0)})});
   auto def = readContactDefinition(kw, blocks(0.1));
   EXPECT_EQ(def->settings.formulation, Formulation::Continue);
   EXPECT_EQ(def->zones[0].algorithm, ContactAlgorithm::Lac);
