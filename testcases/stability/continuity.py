@@ -88,8 +88,15 @@ def continuity(stella, workdir):
 
 
 def units(stella, workdir):
-    # (case, length unit in m, stress unit in Pa)
-    systems = [("gen_units_n_m", 1.0, 1.0), ("gen_units_n_mm", 1e-3, 1e6), ("gen_units_kn_mm", 1e-3, 1e9)]
+    # (case, length unit in m, stress unit in Pa): the discrete penalised series, then the continuous
+    # formulation with its default COEF_CONT
+    failures = unit_series(stella, workdir, [("gen_units_n_m", 1.0, 1.0), ("gen_units_n_mm", 1e-3, 1e6),
+                                             ("gen_units_kn_mm", 1e-3, 1e9)])
+    return failures + unit_series(stella, workdir, [("gen_continue_units_n_m", 1.0, 1.0),
+                                                    ("gen_continue_units_n_mm", 1e-3, 1e6)])
+
+
+def unit_series(stella, workdir, systems):
     results = []
     for name, length, stress in systems:
         values, mess = run(stella, workdir, name)
@@ -101,8 +108,8 @@ def units(stella, workdir):
     for name, dims in results[1:]:
         worst = max(abs(a - b) / abs(a) for a, b in zip(ref, dims))
         ok = len(dims) == len(ref) == 5 and worst <= 1e-8
-        print("%s vs gen_units_n_m: largest relative difference of the dimensionless results %.2e %s" % (
-            name, worst, "OK" if ok else "FAILED"))
+        print("%s vs %s: largest relative difference of the dimensionless results %.2e %s" % (
+            name, results[0][0], worst, "OK" if ok else "FAILED"))
         failures += 0 if ok else 1
     return failures
 

@@ -143,7 +143,7 @@ def zone(algo, e_n=None, slave="'UP_BOT'", extra=None):
 
 def pressed_stack(name, why, mesh, e_low, e_up, strain, h_low, h_up, w_up, algo, e_n=None, tol=1e-9,
                   contact_kw="", low_fixed=False, lengths="m", extra_zone=None, slave="'UP_BOT'",
-                  test_groups=("UP_BOT", "LOW_TOP"), slave_cells=1, cine=False):
+                  test_groups=("UP_BOT", "LOW_TOP"), slave_cells=1, cine=False, continuous=False):
     """UP pressed on LOW by the imposed DY = -d of its top (d = strain x (h_low + h_up)), NU = 0,
     DX of UP held: uniform uniaxial stress s, d = s (h_low / e_low + h_up / e_up + W / (2 E_N)) (the
     last term for a penalty on a one-cell-wide UP: both slave nodes carry s W / 2)."""
@@ -151,6 +151,8 @@ def pressed_stack(name, why, mesh, e_low, e_up, strain, h_low, h_up, w_up, algo,
     compliance = (0.0 if low_fixed else h_low / e_low) + h_up / e_up
     # penetration per unit stress: the interior slave nodes carry s W / n (n = slave_cells > 1)
     pen = w_up / (max(2, slave_cells) * e_n) if algo == "PENALISATION" else 0.0
+    if continuous:  # FORMULATION='CONTINUE': LAGS_C = COEF_PENA_CONT min(gap, 0), a pressure law
+        pen = 1.0 / e_n if algo == "PENALISATION" else 0.0
     s = d / (compliance + pen)
     d_low = -s * h_low / e_low if not low_fixed else 0.0
     d_upbot = d_low - s * pen
@@ -165,8 +167,13 @@ def pressed_stack(name, why, mesh, e_low, e_up, strain, h_low, h_up, w_up, algo,
     comm += "LOAD = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='UP_TOP', DY=%r))\n" % (-d)
     comm += "RAMP = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0))\n"
     comm += "L_INST = DEFI_LIST_REEL(VALE=(0.0, 1.0))\n"
-    comm += "CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='DISCRETE'%s, ZONE=(%s,))\n" % (
-        contact_kw, zone(algo, e_n, slave, extra_zone))
+    if continuous:
+        law = ", COEF_PENA_CONT=%r" % e_n if algo == "PENALISATION" else ""
+        comm += ("CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE'%s, ZONE=_F(GROUP_MA_MAIT='LOW_TOP', "
+                 "GROUP_MA_ESCL=%s, ALGO_CONT='%s'%s, CONTACT_INIT='OUI'))\n" % (contact_kw, slave, algo, law))
+    else:
+        comm += "CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='DISCRETE'%s, ZONE=(%s,))\n" % (
+            contact_kw, zone(algo, e_n, slave, extra_zone))
     comm += ("RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, CONTACT=CONT, EXCIT=(_F(CHARGE=BC), "
              "_F(CHARGE=LOAD, FONC_MULT=RAMP)), INCREMENT=_F(LIST_INST=L_INST))\n")
     tests = []
@@ -181,8 +188,11 @@ def pressed_stack(name, why, mesh, e_low, e_up, strain, h_low, h_up, w_up, algo,
     # the master pushes the slave up with s W in total
     tests += test_sum("CONT_NOEU", "UP_BOT", "RY", s * w_up, tol)
     comm += "\n".join(tests) + "\nFIN()\n"
+    law = " + W/(max(2, n) E_N), n slave cells" if pen else ""
+    if continuous and pen:
+        law = " + 1/COEF_PENA_CONT"
     ref = "contact resultant s W = %.6g, DY(UP_BOT) = %.6g %s (d = s (H/E per block%s))" % (
-        s * w_up, d_upbot, lengths, " + W/(max(2, n) E_N), n slave cells" if pen else "")
+        s * w_up, d_upbot, lengths, law)
     case(name, why, mesh, comm, (why, ref, "%g relative" % tol))
 
 
@@ -441,6 +451,27 @@ def write_all():
                       m, 2.1e11 * stress, 2.1e11 * stress, 1e-5, length, length, 0.1 * length,
                       "PENALISATION", e_n=2.1e11 * stress, tol=1e-8, lengths=tag.split("_")[1])
     more_cases(mesh)
+    # 4 the continuous formulation (LAGS_C unknowns): the same stacks with the augmented Lagrangian
+    # (exact: the result must not depend on COEF_CONT nor on the units) and with its penalty law
+    for ratio, tag in ((1e6, "1e6"), (1e9, "1e9")):
+        e_soft = 2.1e11 / ratio
+        pressed_stack("gen_continue_ratio_%s" % tag,
+                      "stiffness ratio %s, FORMULATION='CONTINUE' STANDARD (augmented Lagrangian)" % tag,
+                      four, 2.1e11, e_soft, 1e-4, 1.0, 1.0, 1.0, "STANDARD", tol=1e-6 if ratio > 1e6 else 1e-8,
+                      continuous=True)
+    for k in (8, 12, 16):
+        rho = 10.0 ** k
+        pressed_stack("gen_continue_penalty_1e%02d" % k,
+                      "FORMULATION='CONTINUE' PENALISATION COEF_PENA_CONT = 1e%d (E = 2.1e11: ratio %.0e)"
+                      % (k, rho / 2.1e11), one, 2.1e11, 2.1e11, 1e-5, 1.0, 1.0, 0.1, "PENALISATION", e_n=rho,
+                      tol=1e-6, continuous=True)
+    for tag, length, force in (("n_m", 1.0, 1.0), ("n_mm", 1e3, 1.0)):
+        stress = force / length ** 2
+        m = mesh("gen_units_%s.msh" % tag, stack_mesh(0.1 * length, length, 1, 4, 0.1 * length, length, 1, 4))
+        pressed_stack("gen_continue_units_%s" % tag,
+                      "unit scaling (%s), FORMULATION='CONTINUE' with the default COEF_CONT"
+                      % {"n_m": "N/m", "n_mm": "N/mm"}[tag], m, 2.1e11 * stress, 2.1e11 * stress, 1e-5, length,
+                      length, 0.1 * length, "STANDARD", tol=1e-8, lengths=tag.split("_")[1], continuous=True)
     for name, m in meshes.items():
         m.write(os.path.join(HERE, name))
     rows = []
