@@ -7,6 +7,7 @@
 // refusals of what is not implemented yet. The numbers are asserted by TEST_RESU against
 // ANALYTIQUE references inside the command files.
 
+#include "solver/contact/tests/ContactStudyRun.hpp"
 #include "solver/contact/tests/ContactTestMeshes.hpp"
 #include "solver/io/MeshIO.hpp"
 #include "solver/job/BatchJob.hpp"
@@ -23,49 +24,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct StudyRun {
-  JobDiagnostic diagnostic = JobDiagnostic::AbnormalAbort;
-  std::string message;
-};
-
-std::string readText(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-bool passed(const StudyRun& r) {
-  return r.diagnostic == JobDiagnostic::Ok || r.diagnostic == JobDiagnostic::Alarm;
-}
-
 StudyRun runStudy(const std::string& name, const Mesh& mesh, const std::string& comm, bool quiet = false) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "stella_contact_continue" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  writeAsterMesh(dir / "mesh.mail", mesh);
-  const fs::path file = dir / (name + ".comm");
-  std::ofstream(file) << comm;
-  RunOptions options;
-  options.echo = false;
-  options.workDirectory = dir / "work";
-  const JobResult r = runCommandFile(file, {{20, dir / "mesh.mail"}}, options);
-  StudyRun run{r.diagnostic, readText(dir / (name + ".mess"))};
-  if (!quiet && !passed(run)) {
-    std::cerr << run.message << "\n";
-  }
-  return run;
-}
-
-std::string testResu(double inst, const std::string& field, const std::string& cmp, const std::string& group,
-                     const std::string& kind, double value, double precision) {
-  const bool absolute = value == 0.0;
-  return fmt::format(
-      "TEST_RESU(RESU=_F(RESULTAT=RESU, INST={}, NOM_CHAM='{}', NOM_CMP='{}', GROUP_NO='{}', "
-      "TYPE_TEST='{}', VALE_CALC={:.17g}, TOLE_MACHINE={}, CRITERE='{}', REFERENCE='ANALYTIQUE', "
-      "VALE_REFE={:.17g}, PRECISION={}))\n",
-      inst, field, cmp, group, kind, value, absolute ? 1.0 : std::max(precision, 1e-6),
-      absolute ? "ABSOLU" : "RELATIF", value, precision);
+  return runStudyIn("stella_contact_continue", name, mesh, comm, quiet);
 }
 
 // Block A = [0,1]^d fixed on its bottom face, block B above it with an initial gap, its top face

@@ -14,6 +14,7 @@
 // uniform here, see checks()), ALGO_RESO_FROT NEWTON and POINT_FIXE, mu = 0.3 and 1.0. Numbers
 // asserted by TEST_RESU / TEST_TABLE against ANALYTIQUE references inside the command files.
 
+#include "solver/contact/tests/ContactStudyRun.hpp"
 #include "solver/contact/tests/ContactTestMeshes.hpp"
 #include "solver/io/MeshIO.hpp"
 #include "solver/job/BatchJob.hpp"
@@ -33,38 +34,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct StudyRun {
-  JobDiagnostic diagnostic = JobDiagnostic::AbnormalAbort;
-  std::string message;
-};
-
-std::string readText(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-bool passed(const StudyRun& r) {
-  return r.diagnostic == JobDiagnostic::Ok;
-}
-
 StudyRun runStudy(const std::string& name, const Mesh& mesh, const std::string& comm, bool quiet = false) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "stella_friction_continue" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  writeAsterMesh(dir / "mesh.mail", mesh);
-  const fs::path file = dir / (name + ".comm");
-  std::ofstream(file) << comm;
-  RunOptions options;
-  options.echo = false;
-  options.workDirectory = dir / "work";
-  const JobResult r = runCommandFile(file, {{20, dir / "mesh.mail"}}, options);
-  StudyRun run{r.diagnostic, readText(dir / (name + ".mess"))};
-  if (!quiet && !passed(run)) {
-    std::cerr << run.message << "\n";
-  }
-  return run;
+  return runStudyIn("stella_friction_continue", name, mesh, comm, quiet);
 }
 
 // RESI_GLOB_RELA of the iteration 0 of each step, from the convergence tables of the message file.
