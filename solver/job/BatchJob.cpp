@@ -1,4 +1,5 @@
 #include "BatchJob.hpp"
+#include "ExportParameters.hpp"
 #include "JobSpec.hpp"
 
 #include "CopyBack.hpp"
@@ -516,59 +517,6 @@ namespace {
 JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
   fs::path work = makeWorkDirectory(options);
   return options.supervised ? runSupervised(spec, options, work) : runInWork(spec, options, work);
-}
-
-// P time_limit <seconds>: the run stops at the next safe point once it has run that long.
-unsigned timeLimitOf(const Export& study) {
-  if (!study.hasParameter("time_limit")) {
-    return 0;
-  }
-  const std::vector<std::string> words = study.parameter("time_limit");
-  char* end = nullptr;
-  const double seconds = words.size() == 1 ? std::strtod(words.front().c_str(), &end) : -1.0;
-  if (words.size() != 1 || end == words.front().c_str() || *end != '\0' || !(seconds > 0.0) ||
-      seconds > 1.0e9) {
-    throw UserError(
-        Diagnostic::fatal("EXPORT_9", "P time_limit expects one positive number of seconds, got '" +
-                                          fmt::format("{}", fmt::join(words, " ")) + "'")
-            .withNote(study.file.string() + ": write e.g. P time_limit 3600"));
-  }
-  return static_cast<unsigned>(std::ceil(seconds));
-}
-
-// P memory_limit <MiB>: the address space the run may use (as code_aster's run script applies it).
-double memoryLimitOf(const Export& study) {
-  if (!study.hasParameter("memory_limit")) {
-    return 0.0;
-  }
-  const std::vector<std::string> words = study.parameter("memory_limit");
-  char* end = nullptr;
-  const double mebibytes = words.size() == 1 ? std::strtod(words.front().c_str(), &end) : -1.0;
-  if (words.size() != 1 || end == words.front().c_str() || *end != '\0' || !(mebibytes >= 64.0) ||
-      mebibytes > 1.0e9) {
-    throw UserError(
-        Diagnostic::fatal("EXPORT_11", "P memory_limit expects one number of MiB of at least 64, got '" +
-                                           fmt::format("{}", fmt::join(words, " ")) + "'")
-            .withNote(study.file.string() + ": write e.g. P memory_limit 4096"));
-  }
-  return mebibytes;
-}
-
-// P ncpus <n>: the threads a command may use (the contact pairing's slave-node chunks).
-int cpusOf(const Export& study) {
-  if (!study.hasParameter("ncpus")) {
-    return 1;
-  }
-  const std::vector<std::string> words = study.parameter("ncpus");
-  char* end = nullptr;
-  const long n = words.size() == 1 ? std::strtol(words.front().c_str(), &end, 10) : -1;
-  if (words.size() != 1 || end == words.front().c_str() || *end != '\0' || n < 1 || n > 1024) {
-    throw UserError(
-        Diagnostic::fatal("EXPORT_10", "P ncpus expects one whole number of threads from 1 to 1024, got '" +
-                                           fmt::format("{}", fmt::join(words, " ")) + "'")
-            .withNote(study.file.string() + ": write e.g. P ncpus 2"));
-  }
-  return static_cast<int>(n);
 }
 
 } // namespace
