@@ -126,12 +126,16 @@ check(cmd.startswith("cp ../../../../testcases/lame_cylinder/ring_tria3.msh ") a
       "the mesh command as run: " + cmd)
 PY
 grep -q "the mesh command failed" "$out/mesh.txt" || fail "the failed mesh is not reported: $(cat "$out/mesh.txt")"
-# Interrupted (SIGINT to the sweep): no new run, the table of what was done, exit 6. 4 points x 20
-# repeats (the failing points are not repeated: 42 runs) take at least 2 s; the signal comes after
-# 1 s, and the run under way then ends normally (the signal went to the sweep only).
-"$stella" sweep "$tiny/tiny.sweep" --repeats 20 --output-dir "$out/stop" --no-plot 2>"$out/stop.txt" &
+# Interrupted (SIGINT to the sweep): no new run, the table of what was done, exit 6. 4 points x
+# 1000 repeats (the failing points are not repeated: 2002 runs) cannot end before the signal, which
+# comes as soon as the first run is reported (polled, not slept: no machine is too fast for it); the
+# run under way then ends normally (the signal went to the sweep only).
+"$stella" sweep "$tiny/tiny.sweep" --repeats 1000 --output-dir "$out/stop" --no-plot 2>"$out/stop.txt" &
 pid=$!
-sleep 1
+for _ in $(seq 600); do
+  grep -q "QUAD8 MODEL=D_PLAN (1/1000): OK" "$out/stop.txt" 2>/dev/null && break
+  sleep 0.1
+done
 kill -INT "$pid"
 set +e
 wait "$pid"
