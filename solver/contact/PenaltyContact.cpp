@@ -84,7 +84,7 @@ PenaltyEvaluation evaluatePenalty(const ContactProblem& p, const FrictionRows* f
       t1 = -mu * lambda * nx;
       t2 = -mu * lambda * ny;
       const double c = par.matrixCoefficient(i);
-      if (c != 0.0) {
+      if (c != 0.0 && mu != 0.0) { // COULOMB = 0: no force, no tangent
         // c * [ mu lambda/|s| T^T (I - n n^T) T - mu E_N T^T n A ].
         const double k = c * mu * lambda / slip;
         addOuter(e.tangent, fr->T1, i, fr->T1, i, k * (1.0 - nx * nx));

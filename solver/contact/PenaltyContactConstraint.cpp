@@ -38,6 +38,33 @@ std::string PenaltyContactConstraint::resolutionEffects() const {
 void PenaltyContactConstraint::beginStep(const Eigen::VectorXd& u, double time) {
   ContactConstraint::beginStep(u, time); // pairs (or not) and calls paired()
   closedThisStep_.assign(static_cast<std::size_t>(rows_.problem.A.rows()), 0);
+  lastTangentStatuses_.clear();
+  if (residualBelowThreshold_ || statusesSettled_) {
+    residualBelowThreshold_ = false; // the prediction of a step: COEF_MATR_FROT as given
+    statusesSettled_ = false;
+    applyMatrixCoefficients();
+  }
+}
+
+void PenaltyContactConstraint::residualMeasured(double relativeResidual) {
+  // code_aster's threshold on the global residual (its discrete friction matrix): below 1e-3 the
+  // factor of the sliding links' tangent is 1 whatever COEF_MATR_FROT.
+  const bool below = relativeResidual >= 0.0 && relativeResidual < 1e-3;
+  if (below != residualBelowThreshold_ && friction_) {
+    residualBelowThreshold_ = below;
+    applyMatrixCoefficients();
+  }
+}
+
+void PenaltyContactConstraint::applyMatrixCoefficients() {
+  const auto m = static_cast<Eigen::Index>(rows_.link.size());
+  parameters_.matrixCoefficient.resize(m);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const ContactLink& l = links_[static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(i)])];
+    const ContactZone& z = definition_->zones[static_cast<std::size_t>(l.zone)];
+    parameters_.matrixCoefficient(i) =
+        residualBelowThreshold_ || statusesSettled_ ? 1.0 : z.frictionMatrixCoefficient;
+  }
 }
 
 void PenaltyContactConstraint::updateParameters() {
@@ -46,7 +73,6 @@ void PenaltyContactConstraint::updateParameters() {
   parameters_.normalPenalty.resize(m);
   parameters_.tangentPenalty.resize(m);
   parameters_.coulomb.resize(m);
-  parameters_.matrixCoefficient.resize(m);
   parameters_.slipOffset.resize(0, 2);
   for (Eigen::Index i = 0; i < m; ++i) {
     const ContactLink& l = links_[static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(i)])];
@@ -58,8 +84,8 @@ void PenaltyContactConstraint::updateParameters() {
     parameters_.normalPenalty(i) = en;
     parameters_.tangentPenalty(i) = z.tangentPenalty;
     parameters_.coulomb(i) = z.coulomb;
-    parameters_.matrixCoefficient(i) = z.frictionMatrixCoefficient;
   }
+  applyMatrixCoefficients();
   if (!friction_) {
     return;
   }
@@ -130,6 +156,18 @@ void PenaltyContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::Vector
     return;
   }
   PenaltyEvaluation e = evaluate(u);
+  if (tangent != nullptr && friction_) {
+    // The statuses (open, sticking, sliding) of this iterate are those of the last tangent's: the
+    // fixed point on the friction forces has nothing left to settle, the whole tangent converges
+    // quadratically from here (stella's rule beside code_aster's threshold on the residual).
+    const bool settled = e.status == lastTangentStatuses_;
+    lastTangentStatuses_ = e.status;
+    if (settled != statusesSettled_) {
+      statusesSettled_ = settled;
+      applyMatrixCoefficients();
+      e = evaluate(u);
+    }
+  }
   forces += e.force;
   if (tangent != nullptr) {
     tangent->insert(tangent->end(), e.tangent.begin(), e.tangent.end());
@@ -245,10 +283,11 @@ std::string PenaltyContactConstraint::noConvergenceNote() const {
   if (!withoutTangent) {
     return {};
   }
-  return "with penalised friction and COEF_MATR_FROT = 0 the matrix has no term for the sliding links: "
-         "their friction force COULOMB x E_N x penetration follows the normal forces as a fixed point, "
-         "which converges linearly when the friction changes the normal forces much (COULOMB near 1, a "
-         "stiff contact); COEF_MATR_FROT = 1 adds its derivative to the matrix (notice §3.3.2: it "
+  return "with penalised friction and COEF_MATR_FROT = 0 the matrix has no term for the sliding links "
+         "while RESI_GLOB_RELA >= 1e-3: their friction force COULOMB x E_N x penetration follows the "
+         "normal forces as a fixed point, which converges linearly when the friction changes the normal "
+         "forces much (COULOMB near 1, a stiff contact), and may not reach 1e-3, below which the whole "
+         "tangent is used; COEF_MATR_FROT = 1 adds it from the first iteration (notice §3.3.2: it "
          "accelerates convergence), or raise ITER_GLOB_MAXI";
 }
 

@@ -12,7 +12,11 @@
 // Friction is incremental: the slip of a step is measured from the displacement at the step
 // start, and the elastic slip -t/E_T of the last accepted step carries the friction force over
 // (a return mapping on the tangential force). The friction tangent of sliding links is
-// unsymmetric unless COEF_MATR_FROT = 0: the driver then factorises with unsymmetric storage.
+// unsymmetric: the driver then factorises with unsymmetric storage. COEF_MATR_FROT weighs it
+// while RESI_GLOB_RELA >= 1e-3 (0, the default, leaves it out: the matrix stays symmetric far
+// from the solution); below 1e-3 the whole tangent is used whatever COEF_MATR_FROT, as code_aster
+// does, so that the last iterations converge quadratically instead of by the fixed point of the
+// friction forces on the normal forces (linear, factor about COULOMB: SNL_3 at E_N >= 1e10).
 // DEFI_LIST_INST ECHEC EVENEMENT='INTERPENETRATION': above PENE_MAXI, ADAPT_COEF_PENA multiplies
 // E_N by 10 (at most COEF_MAXI) and Newton goes on; ARRET stops the analysis.
 
@@ -32,6 +36,7 @@ public:
   void addForces(const Eigen::VectorXd& u, Eigen::VectorXd& forces,
                  std::vector<Eigen::Triplet<double>>* tangent) override;
   bool symmetric() const override { return symmetric_; }
+  void residualMeasured(double relativeResidual) override;
   void correct(const Eigen::VectorXd& u, Eigen::VectorXd& ddu, Eigen::VectorXd& dlambda,
                SaddleSolver& solver) override;
 
@@ -52,14 +57,19 @@ protected:
 private:
   PenaltyEvaluation evaluate(const Eigen::VectorXd& u) const;
   void updateParameters();
+  // COEF_MATR_FROT per row, or 1 once RESI_GLOB_RELA < 1e-3 or the statuses settled.
+  void applyMatrixCoefficients();
   void addPatternOfOpenLinks(const PenaltyEvaluation& e, std::vector<Eigen::Triplet<double>>& tangent) const;
 
   bool friction_ = false;
   std::optional<FailurePolicy> policy_;
   double factor_ = 1.0;
   bool symmetric_ = true;
-  PenaltyParameters parameters_;    // per row of the current pairing
-  std::vector<Point3> elasticSlip_; // per link: -t/E_T of the last accepted step
+  bool residualBelowThreshold_ = false;         // the last RESI_GLOB_RELA of the step was below 1e-3
+  bool statusesSettled_ = false;                // the statuses of the iterate are the last tangent's
+  std::vector<LinkStatus> lastTangentStatuses_; // of the last tangent of the step
+  PenaltyParameters parameters_;                // per row of the current pairing
+  std::vector<Point3> elasticSlip_;             // per link: -t/E_T of the last accepted step
   // Per row: the link penetrated at an iterate of the current step. Only such a link, open again
   // and pushed through by the next solve, is resolved on the condensed rows (the cycling the
   // condensation cures needs a link to have been closed once); a link closing for the first time

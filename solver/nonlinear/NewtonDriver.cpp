@@ -383,6 +383,9 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
     stepScale_ = std::max(stepScale_, denominator);
     const RelativeTest test = relativeTest(maxi, denominator, std::max(forceScale_, stepScale_), settings_);
     const double rela = test.rela;
+    if (constraint_ != nullptr) {
+      constraint_->residualMeasured(rela);
+    }
     if (test.nullLoad && !nullLoadNoted) {
       nullLoadNoted = true;
       if (std::max(forceScale_, stepScale_) <= 0.0 && settings_.resiGlobMaxi <= 0.0 && maxi > 0.0) {

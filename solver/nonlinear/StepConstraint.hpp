@@ -61,6 +61,10 @@ public:
 
   // Whether the tangent contributions are symmetric (chooses the matrix storage).
   virtual bool symmetric() const = 0;
+  // The RESI_GLOB_RELA of the iteration just measured at the iterate whose tangent comes next
+  // (negative: no relative reference, the absolute test applies). Penalised friction uses it:
+  // COEF_MATR_FROT weighs the sliding links' tangent only while it is >= 1e-3, as code_aster does.
+  virtual void residualMeasured(double relativeResidual) { (void)relativeResidual; }
 
   // Dual methods: `ddu`, `dlambda` solve the linearised system with the residual computed with
   // addForces(u); corrects them so that the constraint holds at u + ddu (the solver's last

@@ -58,8 +58,9 @@ std::string factorisationLine(const MechanicalSystem& system, const NewtonSettin
     return "factorisation unsymmetric [the contact tangent]";
   }
   return fmt::format("factorisation symmetric [every tangent symmetric{}]",
-                     constraint != nullptr ? "; unsymmetric only while a penalised Coulomb slip with "
-                                             "COEF_MATR_FROT > 0 makes the contact tangent so"
+                     constraint != nullptr ? "; unsymmetric only while a penalised Coulomb slip makes the "
+                                             "contact tangent so (COEF_MATR_FROT > 0, or the last "
+                                             "iterations of a step)"
                                            : "");
 }
 

@@ -136,8 +136,10 @@ def effects(stella, workdir):
         ("REAC_GEOM='SANS': paired once", "gen_incompressible_si",
          variant("gen_incompressible_si", "FORMULATION='DISCRETE', ", "FORMULATION='DISCRETE', REAC_GEOM='SANS', "),
          ["no geometric update (REAC_GEOM='SANS': paired once)", "(1 pairing(s))"], []),
-        ("Coulomb friction, COEF_MATR_FROT = 0: symmetric", "gen_friction_mu03", None,
-         ["Coulomb friction COULOMB=0.3 E_T=10000", "0 unsymmetric)"], []),
+        # COEF_MATR_FROT = 0 leaves the sliding links' tangent out only while RESI_GLOB_RELA >= 1e-3
+        # and the statuses change: a sticking block (COULOMB = 1) never needs it.
+        ("Coulomb friction that sticks, COEF_MATR_FROT = 0: symmetric", "gen_friction_mu1", None,
+         ["Coulomb friction COULOMB=1 E_T=10000", "0 unsymmetric)"], []),
         ("Coulomb slip with COEF_MATR_FROT = 1: unsymmetric while sliding", "gen_friction_mu03",
          variant("gen_friction_mu03", "COULOMB=0.3", "COULOMB=0.3, COEF_MATR_FROT=1.0"),
          ["COEF_MATR_FROT=1", "time per effect (s):"], ["0 unsymmetric)"]),
