@@ -7,9 +7,13 @@
 #include "solver/mesh/MeshGeometry.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
 #include <fmt/format.h>
 #include <limits>
+#include <mutex>
+#include <thread>
 
 namespace stella::contact {
 
@@ -98,7 +102,11 @@ std::vector<std::string> ContactConstraint::zoneEffects() const {
 }
 
 std::string ContactConstraint::workSummary() const {
-  return fmt::format("{} pairing(s)", pairings_);
+  if (pairingThreads_ <= 1) {
+    return fmt::format("{} pairing(s)", pairings_);
+  }
+  return fmt::format("{} pairing(s), {} on {} threads", pairings_,
+                     definition_->zones.size() > 1 ? "the zones" : "the slave nodes", pairingThreads_);
 }
 
 const std::vector<ContactLink>& ContactConstraint::pairZoneAt(std::size_t z, const NodePosition& position) {
@@ -106,7 +114,9 @@ const std::vector<ContactLink>& ContactConstraint::pairZoneAt(std::size_t z, con
     PairingOptions options;
     options.dimension = definition_->mesh->dimension();
     options.smoothing = definition_->settings.smoothing;
-    options.threads = pairingThreads_;
+    // Several zones share the threads (one zone per thread, pairZonesInParallel); one zone
+    // splits its slave nodes among them.
+    options.threads = definition_->zones.size() > 1 ? 1 : pairingThreads_;
     for (std::size_t k = 0; k < definition_->zones.size(); ++k) {
       zonePairings_.emplace_back(*definition_->mesh, static_cast<int>(k), definition_->zones[k], options);
     }
@@ -114,13 +124,47 @@ const std::vector<ContactLink>& ContactConstraint::pairZoneAt(std::size_t z, con
   return zonePairings_[z].pair(position);
 }
 
+void ContactConstraint::pairZonesInParallel(const NodePosition& position) {
+  const std::size_t zones = definition_->zones.size();
+  pairZoneAt(0, position); // builds every zone's pairing, pairs zone 0
+  std::atomic<std::size_t> next{1};
+  std::exception_ptr failure;
+  std::mutex failureMutex;
+  auto work = [&] {
+    for (std::size_t z = next++; z < zones; z = next++) {
+      try {
+        zonePairings_[z].pair(position);
+      } catch (...) {
+        const std::lock_guard<std::mutex> lock(failureMutex);
+        failure = failure ? failure : std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> threads;
+  const auto count = std::min<std::size_t>(static_cast<std::size_t>(pairingThreads_), zones - 1);
+  for (std::size_t t = 1; t < count; ++t) {
+    threads.emplace_back(work);
+  }
+  work();
+  for (auto& t : threads) {
+    t.join();
+  }
+  if (failure) {
+    std::rethrow_exception(failure);
+  }
+}
+
 void ContactConstraint::pairAt(const Eigen::VectorXd& u) {
   const Mesh& mesh = *definition_->mesh;
   const std::vector<double> disp = nodalDisplacement(dofs_, mesh.nodeCount(), u);
   const NodePosition position = meshPositions(mesh, &disp);
+  const bool parallelZones = pairingThreads_ > 1 && definition_->zones.size() > 1;
+  if (parallelZones) {
+    pairZonesInParallel(position);
+  }
   std::size_t k = 0;
   for (std::size_t z = 0; z < definition_->zones.size(); ++z) {
-    const auto& zoneLinks = pairZoneAt(z, position);
+    const auto& zoneLinks = parallelZones ? zonePairings_[z].links() : pairZoneAt(z, position);
     links_.resize(std::max(links_.size(), k + zoneLinks.size()));
     std::copy(zoneLinks.begin(), zoneLinks.end(), links_.begin() + static_cast<std::ptrdiff_t>(k));
     k += zoneLinks.size();

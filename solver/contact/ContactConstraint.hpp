@@ -27,7 +27,8 @@ public:
   ContactConstraint(std::shared_ptr<const ContactDefinition> definition, const DofMap& dofs);
   // The first pairing, on the initial configuration (called once after construction).
   void initialize();
-  // Slave-node chunks paired at once (P ncpus); before initialize().
+  // Threads of the pairing (P ncpus): the zones share them, one zone at a time per thread; a
+  // single zone splits its slave nodes among them. Before initialize().
   void setPairingThreads(int threads) { pairingThreads_ = threads; }
 
   std::string effects() const override;
@@ -91,6 +92,8 @@ private:
   void pairAt(const Eigen::VectorXd& u);
   // Pairs zone z at the positions (its ZonePairing, warm after the first call).
   const std::vector<ContactLink>& pairZoneAt(std::size_t z, const NodePosition& position);
+  // Every zone paired at the positions, zones shared among pairingThreads_ threads (P ncpus).
+  void pairZonesInParallel(const NodePosition& position);
   // Criterion of the geometric loop: max |u - u_pairing| on the contact nodes over the step's
   // displacement max |u - u_start| (all DOFs).
   double geometricResidual(const Eigen::VectorXd& u) const;
