@@ -79,6 +79,7 @@ void pairRange(std::span<const Face> slaves, std::span<const Face> masters, cons
         out.overlaps.push_back(r);
       }
     }
+    out.unpairedSlaves += out.overlaps.size() == out.offsets.back() ? 1 : 0;
     out.offsets.push_back(out.overlaps.size());
   }
 }
@@ -100,6 +101,7 @@ void append(FacePairing& all, const FacePairing& part) {
   all.vertices.insert(all.vertices.end(), part.vertices.begin(), part.vertices.end());
   all.candidatePairs += part.candidatePairs;
   all.degenerateSlaves += part.degenerateSlaves;
+  all.unpairedSlaves += part.unpairedSlaves;
 }
 
 } // namespace

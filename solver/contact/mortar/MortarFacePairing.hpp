@@ -7,6 +7,11 @@
 //      normal onto the slave plane and clipped by the slave polygon; masters touching the slave
 //      only along an edge or at a vertex, seen edge-on (grazing) or too far to be candidates
 //      give no overlap; masters facing the slave or facing the same way are both accepted.
+// The search is a distance cut-off: a master farther from the slave face's box than the margin
+// (SearchMargin: absolute, plus 0.25 of the face's size by default) is not a candidate, however
+// it projects. The default pairs across gaps up to a quarter of the slave faces' size; across
+// a larger gap set `margin.absolute` to it (the formulation knows its largest gap to pair).
+// `unpairedSlaves` counts the slaves left without any overlap.
 // Slave and master faces: TRIA3, TRIA6, TRIA7, QUAD4, QUAD8, QUAD9 (their linear hull is
 // clipped, MortarPolygons.hpp). A degenerate slave face (zero area) has no overlap and is
 // counted in `degenerateSlaves`.
@@ -53,6 +58,7 @@ struct FacePairing {
   std::vector<Point3> vertices;        // polygons, when keepPolygons
   std::size_t candidatePairs = 0;      // pairs clipped (the search's output)
   std::size_t degenerateSlaves = 0;
+  std::size_t unpairedSlaves = 0; // slaves without any overlap (degenerate ones included)
 
   std::size_t slaveCount() const { return offsets.size() - 1; }
   std::span<const FaceOverlap> of(std::size_t slave) const {

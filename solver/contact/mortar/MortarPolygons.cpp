@@ -136,7 +136,12 @@ std::array<double, 2> hullCoordinates(const Face& f, const Point3& x, const Poin
       jac.col(1) += gy[i] * q;
     }
     jac.col(2) = Eigen::Vector3d(n[0], n[1], n[2]);
-    const Eigen::Vector3d step = jac.fullPivLu().solve(r);
+    // Cramer's rule (the columns: two tangents and the unit normal, well conditioned unless the
+    // face is seen edge-on); full pivoting where the determinant vanishes next to the tangents.
+    const double det = jac.determinant();
+    const Eigen::Vector3d step = std::abs(det) > 1e-12 * jac.col(0).norm() * jac.col(1).norm()
+                                     ? Eigen::Vector3d(jac.inverse() * r)
+                                     : Eigen::Vector3d(jac.fullPivLu().solve(r));
     xi(0) -= step(0);
     xi(1) -= step(1);
     along -= step(2);

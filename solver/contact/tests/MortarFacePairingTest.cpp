@@ -96,6 +96,7 @@ TEST(MortarFacePairing, FlatSurfaceFullyCoveredAddsUpToEverySlaveArea) {
         }
         EXPECT_NEAR(total, 1.0, 1e-12) << name(st) << " on " << name(mt);
         EXPECT_EQ(p.degenerateSlaves, 0u);
+        EXPECT_EQ(p.unpairedSlaves, 0u);
       }
     }
   }
@@ -240,8 +241,26 @@ TEST(MortarFacePairing, GrazingTouchingAndDegenerateFacesGiveNoNanAndNoSliver) {
   const auto flat = surface(CellType::QUAD4, 3, 3, distortedSquare(0.0, 0.0), true);
   const FacePairing d = pairFaces(bad, flat);
   EXPECT_EQ(d.degenerateSlaves, 1u);
+  EXPECT_EQ(d.unpairedSlaves, 1u);
   EXPECT_TRUE(d.of(bad.size() - 1).empty());
   EXPECT_NEAR(d.coveredArea(0), hullArea(bad[0]), 1e-15);
+}
+
+TEST(MortarFacePairing, MastersBeyondTheSearchMarginAreNotCandidates) {
+  // Slave faces 0.1 wide (margin 0.025 by default), masters 0.04 above: none found, all counted
+  // unpaired; with an absolute margin of 0.05, every slave face covered.
+  const auto slaves = surface(CellType::QUAD4, 10, 10, distortedSquare(0.0, 0.0));
+  const auto masters = surface(CellType::TRIA3, 7, 7, distortedSquare(0.0, 0.04, -0.1, 1.1), true);
+  const FacePairing near = pairFaces(slaves, masters);
+  EXPECT_EQ(near.overlaps.size(), 0u);
+  EXPECT_EQ(near.unpairedSlaves, slaves.size());
+  FacePairingOptions o;
+  o.margin.absolute = 0.05;
+  const FacePairing far = pairFaces(slaves, masters, o);
+  EXPECT_EQ(far.unpairedSlaves, 0u);
+  for (std::size_t s = 0; s < slaves.size(); ++s) {
+    EXPECT_NEAR(far.coveredArea(s), 0.01, 1e-14);
+  }
 }
 
 Point3 rigid(const Point3& p) { // rotation of 0.9 rad about (1, 2, 3), then a translation
