@@ -246,6 +246,29 @@ TEST(MortarFacePairing, GrazingTouchingAndDegenerateFacesGiveNoNanAndNoSliver) {
   EXPECT_NEAR(d.coveredArea(0), hullArea(bad[0]), 1e-15);
 }
 
+TEST(MortarFacePairing, NearlyParallelMastersCrossingTheSlavePlaneCoverIt) {
+  // Master planes tilted by 1e-9 to 1e-3 rad about a line of the slave plane, crossing it at
+  // x = 0.43, facing either way: each is a graph over the slave plane, so every slave face is
+  // covered exactly once.
+  for (const double tilt : {1e-9, 1e-6, 1e-3}) {
+    for (const bool facing : {true, false}) {
+      const auto slaves = surface(CellType::QUAD8, 6, 5, distortedSquare(0.1, 0.0));
+      const auto masters = surface(
+          CellType::TRIA3, 8, 7,
+          [=](double u, double v) {
+            const Point3 p = distortedSquare(-0.07, 0.0, -0.1, 1.1)(u, v);
+            return Point3{0.43 + (p[0] - 0.43) * std::cos(tilt), p[1], (p[0] - 0.43) * std::sin(tilt)};
+          },
+          facing);
+      const FacePairing p = pairFaces(slaves, masters);
+      EXPECT_EQ(p.unpairedSlaves, 0u);
+      for (std::size_t s = 0; s < slaves.size(); ++s) {
+        EXPECT_NEAR(p.coveredArea(s), hullArea(slaves[s]), 1e-12 * hullArea(slaves[s])) << tilt;
+      }
+    }
+  }
+}
+
 TEST(MortarFacePairing, MastersBeyondTheSearchMarginAreNotCandidates) {
   // Slave faces 0.1 wide (margin 0.025 by default), masters 0.04 above: none found, all counted
   // unpaired; with an absolute margin of 0.05, every slave face covered.
