@@ -332,13 +332,15 @@ Point3 hullPoint(const Face& f, const std::array<double, 2>& c) {
 TEST(MortarFacePairing, IntegrationPointsLieOnBothHullsOnSmallWarpedFacesFarFromTheOrigin) {
   // Faces 1e-3 wide at 100 from the origin (a coordinate's ulp is 1.4e-14): every integration
   // point's slave and master hull points lie on the slave normal through it within 1e-13 (7
-  // ulps). The slave normal summed from absolute positions was 1e-6 off there and put points up
-  // to 1.2e-11 off their line (this test failed before the fix).
+  // ulps). Checked to fail with the slave normal summed from absolute positions (1e-6 off there:
+  // points several 1e-12 off their line) and with a Newton on the hulls stopped at a step of
+  // 1e-2 (1e-9 off: the faces are trapezoids, their bilinear map is not affine).
   const auto far = [](double z, double amplitude, double lo, double hi) {
     return [=](double u, double v) {
       const double x = lo + (hi - lo) * u;
       const double y = lo + (hi - lo) * v;
-      return Point3{100 + 1e-2 * x, -60 + 1e-2 * y,
+      // Trapezoids (a bilinear, not affine, map in the plane) warped out of it.
+      return Point3{100 + 1e-2 * (x + 0.6 * x * y), -60 + 1e-2 * (y - 0.5 * x * y),
                     30 + z + amplitude * std::sin(900 * x) * std::cos(700 * y)};
     };
   };
