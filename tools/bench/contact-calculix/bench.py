@@ -12,10 +12,15 @@ Cases:
   overhead block3d with matching meshes (24^3 and 24^3): the contact solve (CONTRAINTE and GCP)
            against the linear solve of the same mesh with the interface bonded (merged nodes);
            stella only.
-stella runs each contact case with ALGO_CONT='CONTRAINTE' (default) and 'GCP' (RESI_ABSO 1e-8 mm
-for hertz2d, 1e-9 mm for block3d: 1e-8 and 1e-7 of the imposed displacements).
+stella runs each contact case with the variants of --variants (VARIANTS below: the discrete
+formulation's CONTRAINTE, GCP with RESI_ABSO 1e-8 mm for hertz2d and 1e-9 mm for block3d, 1e-8 and
+1e-7 of the imposed displacements, GCP with the elastic matrix; the continuous formulation with the
+contact status in the Newton loop or in a fixed-point loop); CalculiX with the contact pairs of
+--ccx-types (surface to surface, node to surface). Each run's steps, Newton, contact and geometric
+iterations are read from stella's message file; a Markdown table ends the output.
 Usage: bench.py [--stella build/bin/stella] [--cases hertz2d,block3d,overhead] [--codes ccx,stella]
-                [--work /tmp/stella-ccx-bench]
+                [--variants contrainte,gcp,gcp_elas,continue,continue_pf] [--ccx-types s2s,n2s]
+                [--repeats N|hertz2d:N,block3d:M] [--ccx-repeats ...] [--work /tmp/stella-ccx-bench]
 Both codes run on one core (OMP_NUM_THREADS=1); times are wall-clock of the whole run (reading
 the input, meshing data, solving, writing results) and the CPU time (user + sys) of the process.
 """
@@ -72,17 +77,23 @@ def block_mesh(work, nb, nh, merged=False):
 
 
 # ---------------------------------------------------------------- CalculiX side
-def ccx_contact(slave, master):
+CCX_TYPES = {"s2s": "SURFACE TO SURFACE", "n2s": "NODE TO SURFACE"}
+
+
+def ccx_contact(slave, master, kind="s2s"):
+    """CalculiX contact pair: kind 's2s' (surface-to-surface, the default of this bench) or 'n2s'
+    (node-to-surface), on the same element-face surfaces. HARD: CalculiX's penalty with its
+    default stiffness."""
     return f"""*SURFACE INTERACTION, NAME=SI
 *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD
-*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE
+*CONTACT PAIR, INTERACTION=SI, TYPE={CCX_TYPES[kind]}
 {slave}, {master}
 """
 
 
-def ccx_hertz(work):
+def ccx_hertz(work, kind="s2s"):
     mesh = Mesh(hertz_mesh(work))
-    body = ccx_contact("CSLAVE", "CMASTER") + f"""*BOUNDARY
+    body = ccx_contact("CSLAVE", "CMASTER", kind) + f"""*BOUNDARY
 NALL, 3, 3, 0.
 BLOC_BASE, 2, 2, 0.
 BLOC_AXE, 1, 1, 0.
@@ -98,7 +109,7 @@ RF
 CSTR
 *END STEP
 """
-    d = work / "ccx_hertz2d"
+    d = work / f"ccx_hertz2d_{kind}"
     d.mkdir(exist_ok=True)
     write_deck(mesh, d / "hertz.inp", ["BLOC", "IND"], {"BLOC": (E, NU), "IND": (E, NU)},
                ["BLOC_BASE", "BLOC_AXE", "IND_AXE", "IND_TOP", "IND_CONT"],
@@ -115,9 +126,9 @@ CSTR
         **hertz_errors(abs(force[1]), x, p))
 
 
-def ccx_block(work, nb=23, nh=24):
+def ccx_block(work, nb=23, nh=24, kind="s2s"):
     mesh = Mesh(block_mesh(work, nb, nh))
-    body = ccx_contact("CSLAVE", "CMASTER") + f"""*BOUNDARY
+    body = ccx_contact("CSLAVE", "CMASTER", kind) + f"""*BOUNDARY
 SYM_X, 1, 1, 0.
 SYM_Y, 2, 2, 0.
 BAS_Z0, 3, 3, 0.
@@ -134,7 +145,7 @@ U
 CSTR
 *END STEP
 """
-    d = work / f"ccx_block_{nb}_{nh}"
+    d = work / f"ccx_block_{nb}_{nh}_{kind}"
     d.mkdir(exist_ok=True)
     write_deck(mesh, d / "block.inp", ["BAS", "HAUT"], {"BAS": (E, NU), "HAUT": (E, NU)},
                ["SYM_X", "SYM_Y", "BAS_Z0", "HAUT_Z1", "HAUT_BAS"], {"CSLAVE": "HAUT_BAS", "CMASTER": "BAS_HAUT"},
@@ -190,7 +201,7 @@ CL = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=(_F(GROUP_MA='BLOC_BASE', DY=0.0), _F(GR
                                           _F(GROUP_MA='IND_TOP', DY={MD})))
 RAMPE = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0))
 L_INST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, NOMBRE=1))
-CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='DISCRETE',{GLOBAL} ZONE=_F(GROUP_MA_MAIT='BLOC_TOP', GROUP_MA_ESCL='IND_CONT'{ALGO}))
+CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='{FORMULATION}',{GLOBAL} ZONE=_F(GROUP_MA_MAIT='BLOC_TOP', GROUP_MA_ESCL='IND_CONT'{ALGO}))
 RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, CONTACT=CONT, EXCIT=_F(CHARGE=CL, FONC_MULT=RAMPE),
                      INCREMENT=_F(LIST_INST=L_INST){NEWTON})
 IMPR_RESU(FORMAT='RESULTAT', RESU=_F(RESULTAT=RESU, NOM_CHAM='CONT_NOEU', INST=1.0, GROUP_NO='IND_CONT'))
@@ -210,7 +221,7 @@ FIN()
 """
 BLOCK_CONTACT = """RAMPE = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0))
 L_INST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, NOMBRE=1))
-CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='DISCRETE',{GLOBAL} ZONE=_F(GROUP_MA_MAIT='BAS_HAUT', GROUP_MA_ESCL='HAUT_BAS'{ALGO}))
+CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='{FORMULATION}',{GLOBAL} ZONE=_F(GROUP_MA_MAIT='BAS_HAUT', GROUP_MA_ESCL='HAUT_BAS'{ALGO}))
 RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, CONTACT=CONT, EXCIT=_F(CHARGE=CL, FONC_MULT=RAMPE),
                      INCREMENT=_F(LIST_INST=L_INST){NEWTON})"""
 BLOCK_LINEAR = "RESU = MECA_STATIQUE(MODELE=MO, CHAM_MATER=CM, EXCIT=_F(CHARGE=CL))"
@@ -227,6 +238,24 @@ def stella_run(stella, d, comm, msh):
     rc, wall, cpu = run([stella, "run", "case.export", "--quiet", "--work-dir", str(d / "work"),
                          "--output-dir", str(d)], d, d / "stella.log")
     return rc, wall, cpu
+
+
+def iterations(mess):
+    """Steps, Newton, contact and geometric iterations summed over a message file (the lines
+    `stella sweep` reads too: `step k ...: converged in n iteration(s)` and `contact: g geometric
+    iteration(s), c contact iteration(s)`), and the STAT_NON_LINE phase line."""
+    steps = newton = contact = geom = 0
+    phases = ""
+    for line in Path(mess).read_text().splitlines():
+        if line.startswith("   step ") and ": converged in " in line:
+            steps += 1
+            newton += int(line.split(": converged in ")[1].split()[0])
+        elif line.startswith("   contact: ") and " geometric iteration(s)" in line:
+            geom += int(line.split()[1])
+            contact += int(line.split(", ")[1].split()[0])
+        elif line.startswith("   phases (s): "):
+            phases = line.strip()[len("phases (s): "):]
+    return dict(steps=steps, newton=newton, contact_iter=contact, geom_iter=geom, phases=phases)
 
 
 def command_times(mess, names=("STAT_NON_LINE", "MECA_STATIQUE")):
@@ -271,13 +300,39 @@ def nodal_pressure(points, rows, slave, tributary):
 # instead of one per Newton iteration.
 ELASTIC_MATRIX = ", NEWTON=_F(MATRICE='ELASTIQUE')"
 
+# stella variants selectable with --variants: (FORMULATION, keywords of the ZONE, of DEFI_CONTACT,
+# of STAT_NON_LINE). The continuous formulation (issue 16): augmented Lagrangian (ALGO_CONT
+# 'STANDARD', COEF_CONT 100 by default), CONTACT_INIT='OUI', node integration (INTEGRATION
+# 'AUTO': node-to-segment, as the discrete formulation), the contact status in the Newton loop
+# (ALGO_RESO_CONT='NEWTON', the default) or in a fixed-point loop ('POINT_FIXE'); the geometry in a
+# fixed-point loop (ALGO_RESO_GEOM='POINT_FIXE', the default: 'NEWTON' is refused with CONTINUE,
+# CONTACT_20 "not implemented yet").
+# ITER_GLOB_MAXI=30: the one-step hertz2d run needs more than the default 10 Newton iterations
+# from a point contact; it is a cap, not a cost (the table gives the iterations made).
+_CONT = ", ALGO_CONT='STANDARD', CONTACT_INIT='OUI'"
+_ITER = ", CONVERGENCE=_F(ITER_GLOB_MAXI=30)"
+VARIANTS = {
+    "contrainte": ("DISCRETE", "", "", ""),
+    "gcp": ("DISCRETE", ", ALGO_CONT='GCP'", None, ""),
+    "gcp_elas": ("DISCRETE", ", ALGO_CONT='GCP'", None, ELASTIC_MATRIX),
+    "continue": ("CONTINUE", _CONT, "", _ITER),
+    "continue_pf": ("CONTINUE", _CONT, " ALGO_RESO_CONT='POINT_FIXE',", _ITER),
+}
 
-def stella_hertz(work, stella, algo="", newton=""):
+
+def stella_hertz(work, stella, algo="", newton="", variant=None):
+    """variant: a key of VARIANTS (FORMULATION, the ZONE's keywords, DEFI_CONTACT's, STAT_NON_LINE's);
+    without it, the discrete formulation with `algo` and `newton` as before."""
     msh = hertz_mesh(work)
     mesh = Mesh(msh)
-    d = work / f"stella_hertz2d{'_gcp' if algo else ''}{'_elas' if newton else ''}"
-    comm = HERTZ_COMM.format(E=E, NU=NU, MD=-D_HERTZ, ALGO=algo, GLOBAL=(" RESI_ABSO=1.0e-8," if algo else ""),
-                             NEWTON=newton)
+    if variant:
+        form, algo, glob, newton = VARIANTS[variant]
+        glob = " RESI_ABSO=1.0e-8," if glob is None else glob
+        d = work / f"stella_hertz2d_{variant}"
+    else:
+        form, glob = "DISCRETE", (" RESI_ABSO=1.0e-8," if algo else "")
+        d = work / f"stella_hertz2d{'_gcp' if algo else ''}{'_elas' if newton else ''}"
+    comm = HERTZ_COMM.format(E=E, NU=NU, MD=-D_HERTZ, ALGO=algo, GLOBAL=glob, NEWTON=newton, FORMULATION=form)
     rc, wall, cpu = stella_run(stella, d, comm, msh)
     rows = read_resu_block(d / "case.resu", "CONT_NOEU")
     slave = mesh.group_nodes("IND_CONT")
@@ -294,17 +349,24 @@ def stella_hertz(work, stella, algo="", newton=""):
     used = np.unique(np.concatenate([c.ravel() for _n, _t, c in mesh.volume_cells(["BLOC", "IND"])]))
     solve_cpu, solve_wall = command_times(d / "case.mess")
     return dict(rc=rc, wall=wall, cpu=cpu, equations=2 * len(used), nodes=len(used), solve_cpu=solve_cpu,
-                solve_wall=solve_wall, **hertz_errors(force, x, p))
+                solve_wall=solve_wall, **iterations(d / "case.mess"), **hertz_errors(force, x, p))
 
 
-def stella_block(work, stella, nb=23, nh=24, merged=None, algo="", newton=""):
-    """merged: None (contact), 'linear' (bonded, MECA_STATIQUE) or 'snl' (bonded, STAT_NON_LINE)."""
+def stella_block(work, stella, nb=23, nh=24, merged=None, algo="", newton="", variant=None):
+    """merged: None (contact), 'linear' (bonded, MECA_STATIQUE) or 'snl' (bonded, STAT_NON_LINE).
+    variant: a key of VARIANTS, as for stella_hertz."""
     msh = block_mesh(work, nb, nh, merged is not None)
     mesh = Mesh(msh)
+    form, glob = "DISCRETE", (" RESI_ABSO=1.0e-9," if algo else "")
+    if variant:
+        form, algo, glob, newton = VARIANTS[variant]
+        glob = " RESI_ABSO=1.0e-9," if glob is None else glob
     solve = {"linear": BLOCK_LINEAR, "snl": BLOCK_SNL}.get(merged) or BLOCK_CONTACT.format(
-        ALGO=algo, GLOBAL=(" RESI_ABSO=1.0e-9," if algo else ""), NEWTON=newton)
+        ALGO=algo, GLOBAL=glob, NEWTON=newton, FORMULATION=form)
     fields = "'DEPL'" if merged else "('DEPL', 'CONT_NOEU')"
     tag = f"stella_block_{nb}_{nh}{'_' + merged if merged else ''}{'_gcp' if algo else ''}{'_elas' if newton else ''}"
+    if variant:
+        tag = f"stella_block_{nb}_{nh}_{variant}"
     d = work / tag
     rc, wall, cpu = stella_run(stella, d, BLOCK_COMM.format(E=E, NU=NU, MD=-D_BLOCK, SOLVE=solve, FIELDS=fields), msh)
     slave = mesh.group_nodes("HAUT_BAS")
@@ -316,6 +378,7 @@ def stella_block(work, stella, nb=23, nh=24, merged=None, algo="", newton=""):
     if merged:
         out["u_err"] = float(np.max(np.abs(uz + D_BLOCK / 2))) / (D_BLOCK / 2)
         return out
+    out.update(iterations(d / "case.mess"))
     rows = read_resu_block(d / "case.resu", "CONT_NOEU")
     h = 10.0 / nh
     xy = mesh.points[slave][:, :2]
@@ -350,41 +413,77 @@ def block_errors(force, press, uz):
                 u_err=float(np.max(np.abs(uz + D_BLOCK / 2))) / (D_BLOCK / 2))
 
 
+def repeated(n, fn, *a, **k):
+    """fn run n times; the result of the run of median CPU time, with the CPU times of all runs."""
+    runs = sorted((fn(*a, **k) for _ in range(n)), key=lambda r: r["cpu"])
+    out = dict(runs[len(runs) // 2])
+    out["cpu_runs"] = " ".join(f"{r['cpu']:.3g}" for r in runs)
+    return out
+
+
+def summary(results):
+    """Markdown table: CPU (median), ratio CalculiX / stella per case, iterations and errors."""
+    print("\n| case | run | CPU s (median; all runs) | CalculiX s2s CPU / this | steps | Newton | contact it. "
+          "| geom. it. | errors |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for name, r in results.items():
+        case = "hertz2d" if "hertz2d" in name else "block3d" if "block3d" in name else "overhead"
+        ref = results.get(f"ccx {case} s2s")
+        ratio = f"{ref['cpu'] / r['cpu']:.2f}" if ref and r.get("cpu") else ""
+        errs = ", ".join(f"{k} {r[k]:+.3g}" for k in ("p0_err", "a_err_elements", "f_err", "p_err", "u_err") if k in r)
+        print(f"| {case} | {name} | {r['cpu']:.3g} ({r.get('cpu_runs', '')}) | {ratio} | {r.get('steps', '')} "
+              f"| {r.get('newton', '')} | {r.get('contact_iter', '')} | {r.get('geom_iter', '')} | {errs} |")
+
+
+def per_case(text):
+    """'3' (every case) or 'hertz2d:3,block3d:1' -> {case: runs}."""
+    if ":" not in text:
+        return {c: int(text) for c in ("hertz2d", "block3d")}
+    return {c: int(v) for c, v in (x.split(":") for x in text.split(","))}
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--stella", default=str(ROOT / "build/bin/stella"))
     ap.add_argument("--cases", default="hertz2d,block3d,overhead")
     ap.add_argument("--codes", default="ccx,stella")
+    ap.add_argument("--variants", default="contrainte,gcp,gcp_elas",
+                    help="stella runs of hertz2d and block3d, keys of VARIANTS: " + ",".join(VARIANTS))
+    ap.add_argument("--ccx-types", default="s2s", help="CalculiX contact pairs: s2s (surface to surface), n2s "
+                    "(node to surface)")
+    ap.add_argument("--repeats", default="1", help="runs of each stella point, one value or one per case "
+                    "(hertz2d:3,block3d:1); the median CPU time is reported")
+    ap.add_argument("--ccx-repeats", default="1", help="runs of each CalculiX point, one value or one per case "
+                    "(hertz2d:3,block3d:1)")
     ap.add_argument("--work", default="/tmp/stella-ccx-bench")
     args = ap.parse_args()
     work = Path(args.work)
     work.mkdir(parents=True, exist_ok=True)
     cases, codes = args.cases.split(","), args.codes.split(",")
+    variants, kinds = args.variants.split(","), args.ccx_types.split(",")
+    stella_n, ccx_n = per_case(args.repeats), per_case(args.ccx_repeats)
     stella = str(Path(args.stella).resolve())
     results = {}
-    if "hertz2d" in cases:
+
+    def report(name, r):
+        results[name] = r
+        print(name, {k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in r.items()}, flush=True)
+
+    for case, ccx_fn, stella_fn in (("hertz2d", ccx_hertz, stella_hertz), ("block3d", ccx_block, stella_block)):
+        if case not in cases:
+            continue
         if "ccx" in codes:
-            results["ccx hertz2d"] = ccx_hertz(work)
+            for kind in kinds:
+                report(f"ccx {case} {kind}", repeated(ccx_n.get(case, 1), ccx_fn, work, kind=kind))
         if "stella" in codes:
-            results["stella hertz2d"] = stella_hertz(work, stella)
-            results["stella hertz2d GCP"] = stella_hertz(work, stella, algo=", ALGO_CONT='GCP'")
-            results["stella hertz2d GCP, MATRICE='ELASTIQUE'"] = stella_hertz(work, stella, algo=", ALGO_CONT='GCP'",
-                                                                             newton=ELASTIC_MATRIX)
-    if "block3d" in cases:
-        if "ccx" in codes:
-            results["ccx block3d"] = ccx_block(work)
-        if "stella" in codes:
-            results["stella block3d"] = stella_block(work, stella)
-            results["stella block3d GCP"] = stella_block(work, stella, algo=", ALGO_CONT='GCP'")
-            results["stella block3d GCP, MATRICE='ELASTIQUE'"] = stella_block(work, stella, algo=", ALGO_CONT='GCP'",
-                                                                             newton=ELASTIC_MATRIX)
+            for v in variants:
+                report(f"stella {case} {v}", repeated(stella_n.get(case, 1), stella_fn, work, stella, variant=v))
     if "overhead" in cases:
-        results["stella block 24/24 contact"] = stella_block(work, stella, 24, 24)
-        results["stella block 24/24 contact GCP"] = stella_block(work, stella, 24, 24, algo=", ALGO_CONT='GCP'")
-        results["stella block 24/24 bonded, MECA_STATIQUE"] = stella_block(work, stella, 24, 24, merged="linear")
-        results["stella block 24/24 bonded, STAT_NON_LINE"] = stella_block(work, stella, 24, 24, merged="snl")
-    for name, r in results.items():
-        print(name, {k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in r.items()})
+        report("stella block 24/24 contact", stella_block(work, stella, 24, 24))
+        report("stella block 24/24 contact GCP", stella_block(work, stella, 24, 24, algo=", ALGO_CONT='GCP'"))
+        report("stella block 24/24 bonded, MECA_STATIQUE", stella_block(work, stella, 24, 24, merged="linear"))
+        report("stella block 24/24 bonded, STAT_NON_LINE", stella_block(work, stella, 24, 24, merged="snl"))
+    summary(results)
 
 
 if __name__ == "__main__":
