@@ -58,4 +58,11 @@ assert np.allclose(quad[..., 0], 100.0) and np.allclose(quad[..., 1], 0.0, atol=
 print("OK")
 PY
 check "README study: DEPL and SIEF_ELGA read by meshio (doc/post.md read_med) = closed form" /usr/bin/python3 depl.py results/study.rmed
+# The quick run the README gives next: `stella run study.comm --unit 20=mesh.med`, results beside
+# the command file.
+mkdir quick && cp study.comm mesh.med quick/
+(cd quick && "$stella" run study.comm --unit 20=mesh.med --quiet >out.txt 2>&1); code=$?
+check "README quick run: exit 0" test $code -eq 0
+check "README quick run: study.mess OK" grep -q -- "--- DIAGNOSTIC JOB : OK" quick/study.mess
+check "README quick run: study.resu and study.rmed" test -e quick/study.resu -a -s quick/study.rmed
 [ $fails -eq 0 ]
