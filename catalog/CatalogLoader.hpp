@@ -3,7 +3,8 @@
 // the Interpreter, where OPER, MACRO, PROC, SIMP, FACT, BLOC, the rules, NoRepeat, TYPES and
 // DESCRIPTIONS are native functions building the model of CommandSpec.hpp. Then checks the
 // whole catalogue (bad defaults, duplicate keywords, rules naming unknown keywords, missing
-// descriptions); a broken catalogue is an InternalError naming the file and the keyword.
+// descriptions, in CatalogCheck.cpp); a broken catalogue is an InternalError naming the file and
+// the keyword.
 
 #include "CommandSpec.hpp"
 

@@ -5,6 +5,7 @@
 #include "solver/post/Table.hpp"
 #include "solver/post/TableFilter.hpp"
 #include "solver/post/TestKeywords.hpp"
+#include "solver/post/TestReport.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 

@@ -1,7 +1,6 @@
 #include "TestKeywords.hpp"
 
 #include "interpreter/Diagnostics.hpp"
-#include "solver/session/Session.hpp"
 
 namespace stella {
 
@@ -47,20 +46,6 @@ ValueTest valueTestFromKeywords(const KeywordTree& kw, double computed, const st
   t.absolute = kw.textOr("CRITERE", "RELATIF") == "ABSOLU";
   t.ordreGrandeur = kw.realOr("ORDRE_GRANDEUR", 1.0);
   return t;
-}
-
-void reportTest(Session& session, const std::vector<std::pair<std::string, std::string>>& header,
-                const ValueTest& test) {
-  TestOutcome outcome = runValueTest(test, session.options().referenceOnly);
-  std::string text = testHeader(header) + outcome.text + "\n";
-  session.result() << text;
-  session.message() << text;
-  for (int i = 0; i < outcome.ok; ++i) {
-    session.recordTest(true);
-  }
-  for (int i = 0; i < outcome.nook; ++i) {
-    session.recordTest(false);
-  }
 }
 
 } // namespace stella

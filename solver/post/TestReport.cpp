@@ -122,4 +122,16 @@ TestOutcome runValueTest(const ValueTest& test, bool referenceOnly) {
   return out;
 }
 
+void reportTest(TestReportSink& sink, const std::vector<std::pair<std::string, std::string>>& header,
+                const ValueTest& test) {
+  TestOutcome outcome = runValueTest(test, sink.referenceOnlyTests());
+  sink.writeTestLines(testHeader(header) + outcome.text + "\n");
+  for (int i = 0; i < outcome.ok; ++i) {
+    sink.recordTest(true);
+  }
+  for (int i = 0; i < outcome.nook; ++i) {
+    sink.recordTest(false);
+  }
+}
+
 } // namespace stella

@@ -5,6 +5,8 @@
 // A NON_REGRESSION line compares with VALE_CALC (tolerance TOLE_MACHINE); a reference line
 // (ANALYTIQUE, SOURCE_EXTERNE, AUTRE_ASTER, NON_DEFINI) with VALE_REFE (tolerance PRECISION).
 
+#include "TestReportSink.hpp"
+
 #include <optional>
 #include <string>
 #include <utility>
@@ -39,6 +41,10 @@ TestOutcome runValueTest(const ValueTest& test, bool referenceOnly);
 
 // TYPE_TEST of TEST_RESU and TEST_TABLE: MIN, MAX, SOMM or SOMM_ABS of `values` (not empty).
 double reduceByTestType(const std::string& type, const std::vector<double>& values);
+
+// Writes the header and the lines of `test` to `sink` and counts its OK/NOOK lines there.
+void reportTest(TestReportSink& sink, const std::vector<std::pair<std::string, std::string>>& header,
+                const ValueTest& test);
 
 // Python's %s of a real with 'e' printed as 'E' (how code_aster prints tested values).
 std::string testNumber(double x);

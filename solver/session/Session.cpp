@@ -216,6 +216,11 @@ void Session::report(const Diagnostic& d) {
   message_ << framed(d);
 }
 
+void Session::writeTestLines(const std::string& text) {
+  result_ << text;
+  message_ << text;
+}
+
 void Session::recordTest(bool ok) {
   ++(ok ? counts_.testsOk : counts_.testsNook);
 }

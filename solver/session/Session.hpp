@@ -7,6 +7,7 @@
 
 #include "interpreter/CommandHandler.hpp"
 #include "interpreter/Diagnostics.hpp"
+#include "solver/post/TestReportSink.hpp"
 
 #include <chrono>
 #include <filesystem>
@@ -72,7 +73,7 @@ public:
 // A diagnostic in the code_aster-style frame of the message file (" ! <F> <ID>" ...).
 std::string framedDiagnostic(const Diagnostic& d);
 
-class Session : public CommandHandler, public DiagnosticSink {
+class Session : public CommandHandler, public DiagnosticSink, public TestReportSink {
 public:
   Session(const Catalog& catalog, std::ostream& message, std::ostream& result, SessionOptions options);
   ~Session() override;
@@ -110,8 +111,11 @@ public:
   void defer(std::shared_ptr<DeferredReport> r) { deferred_.push_back(std::move(r)); }
   const std::vector<std::shared_ptr<DeferredReport>>& deferred() const { return deferred_; }
   void reportDeferred();
-  // TEST_RESU / TEST_TABLE record each OK/NOOK line here.
-  void recordTest(bool ok);
+  // TestReportSink: TEST_RESU / TEST_TABLE write to the result and message files and record each
+  // OK/NOOK line here.
+  bool referenceOnlyTests() const override { return options_.referenceOnly; }
+  void writeTestLines(const std::string& text) override;
+  void recordTest(bool ok) override;
   void noteFailure(FailureKind kind);
 
   const SessionCounts& counts() const { return counts_; }

@@ -89,5 +89,38 @@ TEST(TestReport, HeaderColumns) {
             "---- RESULTAT         NUME_ORDRE\n     RES              1\n");
 }
 
+// reportTest needs only a TestReportSink (not a Session): the header and lines go out in one
+// piece, each counted line is recorded once, and the sink's --reference-only is honoured.
+class RecordingSink : public TestReportSink {
+public:
+  bool referenceOnly = false;
+  std::string text;
+  int ok = 0;
+  int nook = 0;
+  bool referenceOnlyTests() const override { return referenceOnly; }
+  void writeTestLines(const std::string& t) override { text += t; }
+  void recordTest(bool passed) override { ++(passed ? ok : nook); }
+};
+
+TEST(TestReport, ReportsThroughItsSink) {
+  ValueTest t;
+  t.legend = "DY";
+  t.computed = 1.5;
+  t.valeCalc = 1.0; // NOOK as non-regression (50 % off)
+  t.valeRefe = 1.5; // OK against the reference
+  t.reference = "ANALYTIQUE";
+  RecordingSink sink;
+  reportTest(sink, {{"TABLE", "T"}}, t);
+  EXPECT_EQ(sink.ok, 1);
+  EXPECT_EQ(sink.nook, 1);
+  EXPECT_EQ(sink.text.rfind("---- TABLE\n     T\n", 0), 0u) << sink.text;
+  EXPECT_EQ(sink.text.back(), '\n');
+  RecordingSink referenceOnly;
+  referenceOnly.referenceOnly = true;
+  reportTest(referenceOnly, {{"TABLE", "T"}}, t);
+  EXPECT_EQ(referenceOnly.ok, 1);
+  EXPECT_EQ(referenceOnly.nook, 0);
+}
+
 } // namespace
 } // namespace stella
