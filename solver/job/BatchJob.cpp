@@ -429,7 +429,9 @@ JobResult runInWork(const JobSpec& spec, const RunOptions& options, const fs::pa
   {
     ScopedMemoryLimit memoryLimit(spec.memoryLimit); // lifted before the copy-back
     if (spec.memoryLimit > 0.0) {
-      mess << fmt::format("  Memory limit of the run: {:g} MiB (P memory_limit)\n", spec.memoryLimit);
+      mess << fmt::format("  Memory limit of the run: {:g} MiB (P memory_limit), beyond the program's own "
+                          "address space of {:.0f} MiB at start\n",
+                          spec.memoryLimit, memoryLimit.footprint());
     }
     session = runStudy(spec, work, mess, resuFile, sessionOptions, options, missing);
   }

@@ -5,6 +5,7 @@
 #include <dmumps_c.h>
 
 #include <cmath>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -194,6 +195,11 @@ private:
   }
 
   void check(const char* phase) const {
+    // -7 and -13: MUMPS could not allocate its workspace (the machine's memory, or the run's P
+    // memory_limit): the same out-of-memory error as any other allocation (MEMORY_1).
+    if (id_.infog[0] == -7 || id_.infog[0] == -13) {
+      throw std::bad_alloc();
+    }
     if (id_.infog[0] < 0) {
       throw LinearSolverError(std::string("MUMPS: ") + phase +
                               " failed (INFOG(1) = " + std::to_string(id_.infog[0]) +

@@ -3,13 +3,30 @@
 #include "solver/session/MemoryLimit.hpp"
 
 #include <atomic>
+#include <fstream>
+#include <string>
 #include <sys/resource.h>
 
 namespace stella {
 
 namespace {
 std::atomic<double> limitInForce{0.0};
+
+// The process's address space now (VmSize of /proc/self/status, bytes; 0 when unknown).
+unsigned long long addressSpaceBytes() {
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  while (status >> key) {
+    if (key == "VmSize:") {
+      unsigned long long kib = 0;
+      status >> kib;
+      return kib * 1024ULL;
+    }
+    status.ignore(1 << 12, '\n');
+  }
+  return 0;
 }
+} // namespace
 
 ScopedMemoryLimit::ScopedMemoryLimit(double mebibytes) {
   if (!(mebibytes > 0.0)) {
@@ -19,7 +36,10 @@ ScopedMemoryLimit::ScopedMemoryLimit(double mebibytes) {
   if (getrlimit(RLIMIT_AS, &current) != 0) {
     return;
   }
-  const auto bytes = static_cast<rlim_t>(mebibytes * 1024.0 * 1024.0);
+  // Counted beyond the program's own footprint (libraries, the BLAS threads' stacks and buffers):
+  // what the limit bounds is what the study allocates, whichever BLAS the machine has.
+  footprint_ = static_cast<double>(addressSpaceBytes()) / (1024.0 * 1024.0);
+  const auto bytes = static_cast<rlim_t>((mebibytes + footprint_) * 1024.0 * 1024.0);
   rlimit lowered = current;
   lowered.rlim_cur = current.rlim_max == RLIM_INFINITY || bytes < current.rlim_max ? bytes : current.rlim_max;
   if (setrlimit(RLIMIT_AS, &lowered) != 0) {
