@@ -122,6 +122,10 @@ std::unique_ptr<StepConstraint> makeLac(std::shared_ptr<const ContactDefinition>
     notImplemented("FROTTEMENT='COULOMB' with ALGO_CONT='LAC'", def->settings.frictionAt,
                    "LAC solves frictionless contact (notice §3.1.4); use ALGO_CONT='STANDARD' for friction");
   }
+  if (def->settings.smoothing) {
+    notImplemented("LISSAGE='OUI' with ALGO_CONT='LAC'", def->location,
+                   "LAC uses the normals of the slave cells; remove LISSAGE");
+  }
   const fem::Modelling modelling = system.model().modelling;
   if (modelling == fem::Modelling::ThreeD) {
     notImplemented("ALGO_CONT='LAC' on a 3D model", def->zones.front().location,
