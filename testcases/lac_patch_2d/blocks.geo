@@ -1,9 +1,9 @@
 // Two blocks for the LAC patch test (ssnp170-like, 2D): LOW = [0,1]x[0,1], UP = [0,1]x[1,2], each
 // meshed on its own (nodes duplicated on y = 1), NLOW and NUP cells along x (non-matching),
-// 2 cells along y. QLOW/QUP = 1 recombines into quadrangles; ORDER 2 (INCOMPLETE 1: serendipity).
-DefineConstant[ NLOW = 4, NUP = 3, QLOW = 0, QUP = 0, ORDER = 1, INCOMPLETE = 0 ];
+// 2 cells along y; UP is lifted by GAP (the closing-gap case). QLOW/QUP = 1 recombines into quadrangles; ORDER 2 (INCOMPLETE 1: serendipity).
+DefineConstant[ NLOW = 4, NUP = 3, QLOW = 0, QUP = 0, ORDER = 1, INCOMPLETE = 0, GAP = 0 ];
 Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0}; Point(4) = {0, 1, 0};
-Point(5) = {0, 1, 0}; Point(6) = {1, 1, 0}; Point(7) = {1, 2, 0}; Point(8) = {0, 2, 0};
+Point(5) = {0, 1 + GAP, 0}; Point(6) = {1, 1 + GAP, 0}; Point(7) = {1, 2 + GAP, 0}; Point(8) = {0, 2 + GAP, 0};
 Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
 Line(5) = {5, 6}; Line(6) = {6, 7}; Line(7) = {7, 8}; Line(8) = {8, 5};
 Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};

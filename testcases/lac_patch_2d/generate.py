@@ -45,11 +45,11 @@ CASES = [
 QUAD = {"QUAD4": 1, "QUAD8": 1, "TRIA3": 0, "TRIA6": 0}
 
 
-def mesh(name, low, up, nlow, nup, order):
+def mesh(name, low, up, nlow, nup, order, gap=0.0):
     args = ["gmsh", os.path.join(HERE, "blocks.geo"), "-2", "-format", "msh22", "-o",
             os.path.join(HERE, name + ".msh"), "-setnumber", "NLOW", str(nlow), "-setnumber", "NUP", str(nup),
             "-setnumber", "QLOW", str(QUAD[low]), "-setnumber", "QUP", str(QUAD[up]),
-            "-setnumber", "ORDER", str(order), "-setnumber", "INCOMPLETE", "1"]
+            "-setnumber", "ORDER", str(order), "-setnumber", "INCOMPLETE", "1", "-setnumber", "GAP", repr(gap)]
     subprocess.run(args, check=True, stdout=subprocess.DEVNULL)
 
 
@@ -111,7 +111,64 @@ def export(name):
             f"F mess {name}.mess R 6\nF resu {name}.resu R 8\nF rmed {name}.rmed R 80\nF pvd {name}.pvd R 81\n")
 
 
+# The closing gap: UP lifted by G0, its top moved down by t D (DDL_IMPO, D_PLAN, QUAD4 4 / TRIA3 3,
+# slave UP, CONTACT_INIT='NON', ALGO_RESO_GEOM='POINT_FIXE'). At t = 0.25 the gap is open: UP
+# translates (no stress), JEU = G0 - t D, CONT = 0, PRES = 0; at t = 1 it is closed and both blocks
+# (height 1 each) share the compression D - G0: sigma_yy = -E (D - G0) / (2 (1 - NU^2)) = -25.
+G0 = 0.01
+D = G0 + 2 * (1 - NU * NU) * P / E
+
+
+def closing_comm(calc_gap):
+    def test(field, cmp, kind, inst, refe, crit, prec, legend):
+        group = "GROUP_MA='UP_BOT', " if field == "CONT_ELEM" else ""
+        return (f"    _F(RESULTAT=RESU, INST={inst!r}, NOM_CHAM='{field}', NOM_CMP='{cmp}', TYPE_TEST='{kind}', {group}\n"
+                f"       VALE_CALC={refe!r}, VALE_REFE={refe!r}, REFERENCE='ANALYTIQUE', CRITERE='{crit}',\n"
+                f"       PRECISION={prec!r}, LEGENDE='{legend}'),\n")
+    open_gap = G0 - 0.25 * D
+    return "".join([
+        "# LAC contact closing a gap, written by generate.py: UP (TRIA3, 3 cells) lifted by G0 = 0.01 above LOW\n",
+        "# (QUAD4, 4 cells), its top moved down by t D; CONTACT_INIT='NON', statuses found by the Newton iterations.\n",
+        f"# t = 0.25: open, JEU = G0 - t D = {open_gap!r}, PRES = 0, CONT = 0; t = 1: SIYY = LAGS_C = -25.\n",
+        "DEBUT()\n",
+        "M0 = LIRE_MAILLAGE(FORMAT='GMSH', UNITE=20)\n",
+        "MA = CREA_MAILLAGE(MAILLAGE=M0, DECOUPE_LAC=_F(GROUP_MA_ESCL='UP_BOT'))\n",
+        "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='D_PLAN'))\n",
+        "MAT = DEFI_MATERIAU(ELAS=_F(E=2000.0, NU=0.3))\n",
+        "CM = AFFE_MATERIAU(MAILLAGE=MA, AFFE=_F(TOUT='OUI', MATER=MAT))\n",
+        "FIX = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=(_F(GROUP_MA='BAS', DY=0.0), _F(GROUP_MA=('LOW_LEFT', 'UP_LEFT'), DX=0.0)))\n",
+        f"PUSH = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='UP_TOP', DY={-D!r}))\n",
+        "RAMPE = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0))\n",
+        "L_INST = DEFI_LIST_REEL(VALE=(0.0, 0.25, 1.0))\n",
+        "CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ALGO_RESO_GEOM='POINT_FIXE', ALGO_RESO_CONT='NEWTON',\n",
+        "                    ZONE=_F(ALGO_CONT='LAC', GROUP_MA_MAIT='LOW_TOP', GROUP_MA_ESCL='UP_BOT', CONTACT_INIT='NON'))\n",
+        "RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, CONTACT=CONT, EXCIT=(_F(CHARGE=FIX), _F(CHARGE=PUSH, FONC_MULT=RAMPE)),\n",
+        "                     INCREMENT=_F(LIST_INST=L_INST),\n",
+        "                     # the open step has no reaction (UP translates): an absolute criterion\n",
+        "                     CONVERGENCE=_F(RESI_GLOB_MAXI=1.0e-8))\n",
+        "RESU = CALC_CHAMP(reuse=RESU, RESULTAT=RESU, CONTRAINTE='SIEF_NOEU')\n",
+        "TEST_RESU(RESU=(\n",
+        test("CONT_ELEM", "JEU", "MIN", 0.25, open_gap, "RELATIF", 1e-6, "open gap min"),
+        test("CONT_ELEM", "JEU", "MAX", 0.25, open_gap, "RELATIF", 1e-6, "open gap max"),
+        test("CONT_ELEM", "CONT", "MAX", 0.25, 0.0, "ABSOLU", 0.0, "no patch in contact"),
+        test("CONT_ELEM", "PRES", "MIN", 0.25, 0.0, "ABSOLU", 0.0, "no pressure"),
+        test("SIEF_NOEU", "SIYY", "MIN", 1.0, -P, "RELATIF", 1e-3, "SIYY min = -25"),
+        test("SIEF_NOEU", "SIYY", "MAX", 1.0, -P, "RELATIF", 1e-3, "SIYY max = -25"),
+        test("DEPL", "LAGS_C", "MIN", 1.0, -P, "RELATIF", 1e-3, "LAGS_C min = -25"),
+        test("DEPL", "LAGS_C", "MAX", 1.0, -P, "RELATIF", 1e-3, "LAGS_C max = -25"),
+        test("CONT_ELEM", "JEU", "MIN", 1.0, 0.0, "ABSOLU", 1e-3, "closed"),
+        test("CONT_ELEM", "CONT", "MIN", 1.0, 1.0, "ABSOLU", 0.0, "every patch in contact"),
+        "))\n",
+        "FIN()\n",
+    ])
+
+
 def main():
+    mesh("lac_closing_gap", "QUAD4", "TRIA3", 4, 3, 1, G0)
+    open(os.path.join(HERE, "lac_closing_gap.comm"), "w").write(closing_comm(None))
+    open(os.path.join(HERE, "lac_closing_gap.export"), "w").write(
+        "P testlist verification\nF comm lac_closing_gap.comm D 1\nF msh lac_closing_gap.msh D 20\n"
+        "F mess lac_closing_gap.mess R 6\nF resu lac_closing_gap.resu R 8\n")
     for case in CASES:
         name = "lac_" + case[0]
         mesh(name, *case[1:6])
