@@ -127,10 +127,6 @@ std::unique_ptr<StepConstraint> makeLac(std::shared_ptr<const ContactDefinition>
                    "LAC uses the normals of the slave cells; remove LISSAGE");
   }
   const fem::Modelling modelling = system.model().modelling;
-  if (modelling == fem::Modelling::ThreeD) {
-    notImplemented("ALGO_CONT='LAC' on a 3D model", def->zones.front().location,
-                   "LAC is implemented for D_PLAN, C_PLAN and AXIS models; in 3D use ALGO_CONT='STANDARD'");
-  }
   if (policy) {
     notImplemented("DEFI_LIST_INST EVENEMENT='INTERPENETRATION' with ALGO_CONT='LAC'", at,
                    "remove the INTERPENETRATION event");

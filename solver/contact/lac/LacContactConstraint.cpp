@@ -84,11 +84,16 @@ LacContactConstraint::LacContactConstraint(std::shared_ptr<const ContactDefiniti
     for (std::size_t i = 0; i < slaves.size(); ++i) {
       const CellId c = slaves[i];
       const CellType t = mesh.cellType(c);
-      if (t != CellType::SEG2 && t != CellType::SEG3) {
-        refuseMesh(fmt::format("ALGO_CONT='LAC': slave cell {} of '{}' is a {}; LAC is implemented for "
-                               "SEG2 and SEG3 slave cells (2D)",
-                               mesh.cellName(c), zone.slaveGroup, name(t)),
-                   zone.location, "3D LAC is not implemented yet");
+      const bool planar = modelling != fem::Modelling::ThreeD;
+      const bool known = planar ? t == CellType::SEG2 || t == CellType::SEG3
+                                : t == CellType::TRIA3 || t == CellType::TRIA6 || t == CellType::QUAD4 ||
+                                      t == CellType::QUAD8 || t == CellType::QUAD9;
+      if (!known) {
+        refuseMesh(
+            fmt::format("ALGO_CONT='LAC': slave cell {} of '{}' is a {}; LAC takes SEG2 and SEG3 slave "
+                        "cells in 2D, TRIA3, TRIA6, QUAD4, QUAD8 and QUAD9 in 3D",
+                        mesh.cellName(c), zone.slaveGroup, name(t)),
+            zone.location, "give the boundary edges (2D) or faces (3D) of the slave body in GROUP_MA_ESCL");
       }
       const auto found = patchOf.find(c);
       if (found == patchOf.end()) {
@@ -106,7 +111,7 @@ LacContactConstraint::LacContactConstraint(std::shared_ptr<const ContactDefiniti
     }
     for (const auto& group : {cells.masters, slaves}) {
       for (NodeId n : mesh.nodesOfCells(group)) {
-        for (int k = 0; k < 2; ++k) {
+        for (int k = 0; k < dofs.components(); ++k) {
           if (dofs.dof(n, k) >= 0) {
             equations.insert(dofs.dof(n, k));
           }

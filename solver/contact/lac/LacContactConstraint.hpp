@@ -1,7 +1,7 @@
 #pragma once
 // LAC (mortar, "Local Average Contact") contact in STAT_NON_LINE: DEFI_CONTACT
 // FORMULATION='CONTINUE', ZONE=_F(ALGO_CONT='LAC', APPARIEMENT='MORTAR', ...), notice §3.1.4, 2D
-// models (D_PLAN, C_PLAN, AXIS). The slave surface is cut into patches by
+// models (D_PLAN, C_PLAN, AXIS) and 3D (LacPairing3d.cpp). The slave surface is cut into patches by
 // CREA_MAILLAGE/DECOUPE_LAC (Mesh::lacPatches()); each patch P carries ONE contact pressure
 // lambda_P (LAGS_C, negative in compression) and one condition on its mean gap
 // g_P = G_P / L_P (LacPairing.hpp: the gap integrated over the exact slave/master overlaps).

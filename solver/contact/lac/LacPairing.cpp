@@ -135,7 +135,13 @@ std::vector<LacPatchRow> pairLacPatches(const Mesh& mesh, const std::vector<LacZ
   std::vector<LacPatchRow> rows(mesh.lacPatches().size());
   std::vector<std::map<int, double>> gradients(rows.size());
   for (const auto& zone : zones) {
-    pairZone(mesh, zone, displacement, dofs, options, rows, gradients);
+    const bool faces = !zone.slaves.empty() && mesh.cellType(zone.slaves.front().cell) != CellType::SEG2 &&
+                       mesh.cellType(zone.slaves.front().cell) != CellType::SEG3;
+    if (faces) {
+      pairZone3d(mesh, zone, displacement, dofs, rows, gradients);
+    } else {
+      pairZone(mesh, zone, displacement, dofs, options, rows, gradients);
+    }
   }
   for (std::size_t p = 0; p < rows.size(); ++p) {
     rows[p].gradient.assign(gradients[p].begin(), gradients[p].end());

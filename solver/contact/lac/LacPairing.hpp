@@ -1,9 +1,9 @@
 #pragma once
-// Mortar pairing of LAC contact in 2D (DEFI_CONTACT ALGO_CONT='LAC', APPARIEMENT='MORTAR', notice
-// §2.3, §3.1.4): the slave cells (SEG2, SEG3) of each LAC patch (Mesh::lacPatches(), made by
-// CREA_MAILLAGE/DECOUPE_LAC) are intersected exactly with the master cells (SEG2, SEG3) by the
-// segment clipping of mortar/MortarSegments.hpp; candidates come from the R-tree of the master
-// cells' boxes (MasterCellIndex, TYPE_APPA='RAPIDE') or are every master cell ('ROBUSTE').
+// Mortar pairing of LAC contact in 2D and 3D (3D: LacPairing3d.cpp) (DEFI_CONTACT ALGO_CONT='LAC',
+// APPARIEMENT='MORTAR', notice §2.3, §3.1.4): the slave cells (SEG2, SEG3) of each LAC patch
+// (Mesh::lacPatches(), made by CREA_MAILLAGE/DECOUPE_LAC) are intersected exactly with the master cells
+// (SEG2, SEG3) by the segment clipping of mortar/MortarSegments.hpp; candidates come from the R-tree of the
+// master cells' boxes (MasterCellIndex, TYPE_APPA='RAPIDE') or are every master cell ('ROBUSTE').
 //
 // For each patch P, on the overlaps (Gauss points q with slave xi_s, master xi_m, weight w_q):
 //   g_q = n_s . (x_m(xi_m) - x_s(xi_s))       the gap along the slave's outward normal n_s
@@ -17,6 +17,7 @@
 #include "solver/contact/mortar/MortarSegments.hpp"
 #include "solver/nonlinear/DofMap.hpp"
 
+#include <map>
 #include <vector>
 
 namespace stella::contact::lac {
@@ -47,6 +48,10 @@ struct LacPairingOptions {
   bool axisymmetric = false;
   int gaussPoints = 3;
 };
+
+// One 3D zone (LacPairing3d.cpp): slave and master faces.
+void pairZone3d(const Mesh& mesh, const LacZoneCells& zone, const std::vector<double>& u, const DofMap& dofs,
+                std::vector<LacPatchRow>& rows, std::vector<std::map<int, double>>& gradients);
 
 // Rows of every patch of mesh.lacPatches() (patches of no zone stay empty, length 0), at the
 // positions X + u (`displacement`: 3 per node, ContactRows.hpp's nodalDisplacement).
