@@ -111,6 +111,9 @@ void pairZone3d(const Mesh& mesh, const LacZoneCells& zone, const std::vector<do
     all[k] = static_cast<int>(k);
   }
   std::vector<int> candidates;
+  mortar::PolygonOptions polygonOptions;
+  polygonOptions.degree = 5; // 7 points per triangle: the shape functions of a QUAD4 that is not a
+                             // parallelogram are not polynomials of the position
   for (const LacSlaveCell& sc : zone.slaves) {
     const Face current = faceOf(mesh, sc.cell, &u);
     const Face initial = faceOf(mesh, sc.cell, nullptr);
@@ -128,7 +131,7 @@ void pairZone3d(const Mesh& mesh, const LacZoneCells& zone, const std::vector<do
       std::sort(candidates.begin(), candidates.end());
     }
     const Point3 n = outwardNormal(current, sc.sign);
-    const auto overlaps = mortar::intersectFaces(current, masters, candidates);
+    const auto overlaps = mortar::intersectFaces(current, masters, candidates, polygonOptions);
     const auto slaveNodes = mesh.cellNodes(sc.cell);
     auto& grad = gradients[static_cast<std::size_t>(sc.patch)];
     for (const auto& o : overlaps) {

@@ -51,14 +51,14 @@ struct LacBlocks {
 };
 
 std::string cellTest(double inst, const std::string& cmp, const std::string& kind, double value,
-                     double precision) {
+                     double precision, const std::string& group = "B_YMIN") {
   const bool absolute = value == 0.0;
   return fmt::format(
-      "TEST_RESU(RESU=_F(RESULTAT=RESU, INST={}, NOM_CHAM='CONT_ELEM', NOM_CMP='{}', GROUP_MA='B_YMIN', "
+      "TEST_RESU(RESU=_F(RESULTAT=RESU, INST={}, NOM_CHAM='CONT_ELEM', NOM_CMP='{}', GROUP_MA='{}', "
       "TYPE_TEST='{}', VALE_CALC={:.17g}, TOLE_MACHINE={}, CRITERE='{}', REFERENCE='ANALYTIQUE', "
       "VALE_REFE={:.17g}, PRECISION={}))\n",
-      inst, cmp, kind, value, absolute ? 1.0 : std::max(precision, 1e-6), absolute ? "ABSOLU" : "RELATIF",
-      value, precision);
+      inst, cmp, group, kind, value, absolute ? 1.0 : std::max(precision, 1e-6),
+      absolute ? "ABSOLU" : "RELATIF", value, precision);
 }
 
 TEST(LacContact, ClosingGapOnNonMatchingBlocks) {
