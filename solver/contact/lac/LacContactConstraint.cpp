@@ -23,8 +23,10 @@ namespace {
   throw UserError(Diagnostic::fatal("CONTACT_LAC_1", what, at).withNote(note));
 }
 
-// The node of a patch carrying its LAGS_C: the first node (in the patch's cell order) shared by
-// two of its cells; the middle node of a single SEG3; the first node of a single SEG2.
+// The node of a patch carrying its LAGS_C: the node shared by the most of its cells, the first in
+// the patch's cell order among equals (the centre of a 3D fan, the middle of an edge cut in two, the
+// first new node of an edge cut in three); the middle node of a single SEG3, the centre of a
+// single QUAD9.
 NodeId lagrangeNode(const Mesh& mesh, const Mesh::LacPatch& patch) {
   std::map<NodeId, int> count;
   std::vector<NodeId> order;
@@ -35,13 +37,16 @@ NodeId lagrangeNode(const Mesh& mesh, const Mesh::LacPatch& patch) {
       }
     }
   }
+  NodeId best = order.front();
   for (NodeId n : order) {
-    if (count[n] > 1) {
-      return n;
-    }
+    best = count[n] > count[best] ? n : best;
+  }
+  if (count[best] > 1) {
+    return best;
   }
   const auto nodes = mesh.cellNodes(patch.cells.front());
-  return nodes.size() == 3 ? nodes[2] : nodes[0];
+  const CellType type = mesh.cellType(patch.cells.front());
+  return type == CellType::SEG3 ? nodes[2] : type == CellType::QUAD9 ? nodes[8] : best;
 }
 
 } // namespace

@@ -25,8 +25,8 @@
 // ITER_GEOM_MAXI and RESI_GEOM, CONTROLE with NB_ITER_GEOM, SANS: the initial pairing only).
 // CONTACT_INIT: the status of the first step (OUI every paired patch, INTERPENETRE the patches
 // with g_P < 0, NON none).
-// Fields: LAGS_C in DEPL on one node per patch (the first node of the patch shared by two of its
-// slave cells: the middle of the edge cut by DECOUPE_LAC, the middle node of a SEG3 patch), and
+// Fields: LAGS_C in DEPL on one node per patch (the node shared by the most of its slave cells:
+// the centre of a 3D fan, the middle of an edge cut in two; the middle node of a SEG3 patch), and
 // CONT_ELEM (mortar/ContElemField.hpp). No CONT_NOEU (code_aster writes none for LAC).
 
 #include "solver/contact/ContactDefinition.hpp"
