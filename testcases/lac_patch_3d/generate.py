@@ -26,7 +26,11 @@ CASES = [
     ("h20_h20_swap", 1, 1, 2, 3, 2, "LOW", "PYRA", "RAPIDE", "NEWTON"),
     ("h27_h27", 1, 1, 3, 2, 3, "UP", "PYRA", "RAPIDE", "NEWTON"),
     ("h27_t10_swap", 1, 0, 2, 3, 3, "LOW", "PYRA", "ROBUSTE", "NEWTON"),
+    ("h8_h8_actualise", 1, 1, 3, 2, 1, "UP", "PYRA", "RAPIDE", "NEWTON"),
 ]
+# _actualise: TYPE_JACOBIEN='ACTUALISE', the integrals on the current interface, whose area grew by
+# (1 + eps_xx)^2 with eps_xx = NU P / E (uniaxial stress): LAGS_C = PRES = -P / (1 + NU P / E)^2.
+E, NU = 2000.0, 0.3
 # order 3 above: quadratic with the complete Lagrange cells (HEXA27: QUAD9 faces, not cut by
 # DECOUPE_LAC, each its own patch); order 2: the serendipity ones (HEXA20, TETRA10).
 
@@ -51,6 +55,9 @@ def comm(case):
     name, hlow, hup, nlow, nup, order, slave, cut, appa, geom = case
     master = "LOW" if slave == "UP" else "UP"
     face = {"UP": "UP_BOT", "LOW": "LOW_TOP"}
+    actualise = name.endswith("_actualise")
+    lam = -P / (1 + NU * P / E) ** 2 if actualise else -P
+    jacobian = ", TYPE_JACOBIEN='ACTUALISE'" if actualise else ""
 
     def test(field, cmp, kind, refe, crit, prec, legend):
         group = "GROUP_MA='%s', " % face[slave] if field == "CONT_ELEM" else ""
@@ -61,7 +68,7 @@ def comm(case):
     return "".join([
         f"# LAC patch test (ssnp170-like, 3D), written by generate.py: LOW {'HEXA' if hlow else 'TETRA'} order {order} ({nlow} x {nlow}\n",
         f"# cells along the interface) under UP {'HEXA' if hup else 'TETRA'} ({nup} x {nup}), slave {slave}, DECOUPE_HEXA='{cut}',\n",
-        f"# TYPE_APPA='{appa}', ALGO_RESO_GEOM='{geom}'. Exact: SIZZ = -25, LAGS_C = PRES = -25, JEU = 0.\n",
+        f"# TYPE_APPA='{appa}', ALGO_RESO_GEOM='{geom}'{jacobian}. Exact: SIZZ = -25, LAGS_C = PRES = {lam!r}, JEU = 0.\n",
         "DEBUT()\n",
         "M0 = LIRE_MAILLAGE(FORMAT='GMSH', UNITE=20)\n",
         f"MA = CREA_MAILLAGE(MAILLAGE=M0, DECOUPE_LAC=_F(GROUP_MA_ESCL='{face[slave]}', DECOUPE_HEXA='{cut}'))\n",
@@ -75,17 +82,17 @@ def comm(case):
         "L_INST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, NOMBRE=1))\n",
         f"CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ALGO_RESO_GEOM='{geom}', ALGO_RESO_CONT='NEWTON',\n",
         f"                    ZONE=_F(ALGO_CONT='LAC', APPARIEMENT='MORTAR', GROUP_MA_MAIT='{face[master]}',\n",
-        f"                            GROUP_MA_ESCL='{face[slave]}', CONTACT_INIT='OUI', TYPE_APPA='{appa}'))\n",
+        f"                            GROUP_MA_ESCL='{face[slave]}', CONTACT_INIT='OUI', TYPE_APPA='{appa}'{jacobian}))\n",
         "RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, CONTACT=CONT, EXCIT=_F(CHARGE=CH, FONC_MULT=RAMPE),\n",
         "                     INCREMENT=_F(LIST_INST=L_INST))\n",
         "RESU = CALC_CHAMP(reuse=RESU, RESULTAT=RESU, CONTRAINTE='SIEF_NOEU')\n",
         "TEST_RESU(RESU=(\n",
         test("SIEF_NOEU", "SIZZ", "MIN", -P, "RELATIF", 1e-3, "SIZZ min = -25"),
         test("SIEF_NOEU", "SIZZ", "MAX", -P, "RELATIF", 1e-3, "SIZZ max = -25"),
-        test("DEPL", "LAGS_C", "MIN", -P, "RELATIF", 1e-3, "LAGS_C min"),
-        test("DEPL", "LAGS_C", "MAX", -P, "RELATIF", 1e-3, "LAGS_C max"),
-        test("CONT_ELEM", "PRES", "MIN", -P, "RELATIF", 1e-3, "PRES min"),
-        test("CONT_ELEM", "PRES", "MAX", -P, "RELATIF", 1e-3, "PRES max"),
+        test("DEPL", "LAGS_C", "MIN", lam, "RELATIF", 1e-3, "LAGS_C min"),
+        test("DEPL", "LAGS_C", "MAX", lam, "RELATIF", 1e-3, "LAGS_C max"),
+        test("CONT_ELEM", "PRES", "MIN", lam, "RELATIF", 1e-3, "PRES min"),
+        test("CONT_ELEM", "PRES", "MAX", lam, "RELATIF", 1e-3, "PRES max"),
         test("CONT_ELEM", "JEU", "MIN", 0.0, "ABSOLU", 1e-3, "JEU min = 0"),
         test("CONT_ELEM", "JEU", "MAX", 0.0, "ABSOLU", 1e-3, "JEU max = 0"),
         test("CONT_ELEM", "CONT", "MIN", 1.0, "ABSOLU", 0.0, "every patch in contact"),
