@@ -83,6 +83,10 @@ ContinuousZone readContinuousZone(const KeywordTree& z) {
     c.frictionAugmentation = z.real("COEF_FROT");
   }
   c.frictionPenalty = z.realOr("COEF_PENA_FROT", 0.0);
+  if (z.has("TYPE_APPA")) { // ALGO_CONT='LAC'
+    c.lacBruteForce = z.text("TYPE_APPA") == "ROBUSTE";
+    c.lacCurrentJacobian = z.text("TYPE_JACOBIEN") == "ACTUALISE";
+  }
   refuseUnless(z, "GRAND_GLIS", "NON", c.refused);
   refuseUnless(z, "INTEGRATION", "AUTO", c.refused);
   refuseUnless(z, "DIST_POUTRE", "NON", c.refused);
@@ -117,7 +121,9 @@ ContinuousSettings readContinuousSettings(const KeywordTree& kw) {
       c.maxFrictionIterations = static_cast<int>(kw.integer("ITER_FROT_MAXI"));
     }
   }
-  refuseUnless(kw, "ALGO_RESO_GEOM", "POINT_FIXE", c.refused);
+  // refused unless every zone is LAC (absent from trees built without the catalogue's defaults)
+  c.geometryNewton = kw.has("ALGO_RESO_GEOM") && kw.text("ALGO_RESO_GEOM") == "NEWTON";
+  c.geometryAt = kw.locationOf("ALGO_RESO_GEOM");
   if (kw.real("RESI_CONT") != -1.0) {
     c.refused.push_back({"RESI_CONT (other than its default -1)", kw.locationOf("RESI_CONT")});
   }

@@ -52,6 +52,8 @@ struct ContinuousZone {
   bool frictionPenalised = false;      // ALGO_FROT='PENALISATION' (else STANDARD)
   double frictionAugmentation = 100.0; // COEF_FROT (ALGO_FROT='STANDARD')
   double frictionPenalty = 0.0;        // COEF_PENA_FROT (ALGO_FROT='PENALISATION')
+  bool lacBruteForce = false;          // TYPE_APPA='ROBUSTE' (ALGO_CONT='LAC'; else RAPIDE)
+  bool lacCurrentJacobian = false;     // TYPE_JACOBIEN='ACTUALISE' (ALGO_CONT='LAC'; else INITIAL)
   std::vector<Unimplemented> refused;  // INTEGRATION other than AUTO, DIST_*, GLISSIERE...
 };
 
@@ -96,7 +98,9 @@ struct ContinuousSettings {
   bool frictionFixedPoint = false;            // ALGO_RESO_FROT='POINT_FIXE' (else NEWTON)
   int maxFrictionIterations = 10;             // ITER_FROT_MAXI (POINT_FIXE)
   double frictionResidual = 1e-4;             // RESI_FROT
-  std::vector<Unimplemented> refused;         // ALGO_RESO_GEOM='NEWTON', RESI_CONT, ...
+  bool geometryNewton = false;                // ALGO_RESO_GEOM='NEWTON' (ALGO_CONT='LAC' only)
+  SourceLocation geometryAt;                  // where ALGO_RESO_GEOM is
+  std::vector<Unimplemented> refused;         // RESI_CONT, CONT_STAT_ELAS, ...
 };
 
 // Global keywords.

@@ -8,10 +8,12 @@
 #include "solver/contact/ContinuousContactConstraint.hpp"
 #include "solver/contact/DualContactConstraint.hpp"
 #include "solver/contact/PenaltyContactConstraint.hpp"
+#include "solver/contact/lac/LacContactConstraint.hpp"
 #include "solver/functions/InstantList.hpp"
 #include "solver/nonlinear/MechanicalSystem.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 namespace stella {
@@ -103,12 +105,44 @@ void refuse(const std::vector<contact::Unimplemented>& refused) {
   }
 }
 
+// ALGO_CONT='LAC' (every zone): 2D models, no friction (LacContactConstraint.hpp).
+std::unique_ptr<StepConstraint> makeLac(std::shared_ptr<const ContactDefinition> def,
+                                        const MechanicalSystem& system,
+                                        const std::optional<FailurePolicy>& policy,
+                                        const SourceLocation& at) {
+  refuse(def->settings.continuous.refused);
+  for (const auto& z : def->zones) {
+    if (z.algorithm != ContactAlgorithm::Lac) {
+      notImplemented(fmt::format("a zone with ALGO_CONT='{}' beside zones with ALGO_CONT='LAC'",
+                                 contact::algorithmName(z.algorithm)),
+                     z.location, "give every zone ALGO_CONT='LAC', or none");
+    }
+  }
+  if (def->hasFriction()) {
+    notImplemented("FROTTEMENT='COULOMB' with ALGO_CONT='LAC'", def->settings.frictionAt,
+                   "LAC solves frictionless contact (notice §3.1.4); use ALGO_CONT='STANDARD' for friction");
+  }
+  if (def->settings.smoothing) {
+    notImplemented("LISSAGE='OUI' with ALGO_CONT='LAC'", def->location,
+                   "LAC uses the normals of the slave cells; remove LISSAGE");
+  }
+  const fem::Modelling modelling = system.model().modelling;
+  if (policy) {
+    notImplemented("DEFI_LIST_INST EVENEMENT='INTERPENETRATION' with ALGO_CONT='LAC'", at,
+                   "remove the INTERPENETRATION event");
+  }
+  return std::make_unique<contact::lac::LacContactConstraint>(std::move(def), system.dofs(), modelling);
+}
+
 // FORMULATION='CONTINUE': what is not implemented yet is refused, naming the keyword.
 std::unique_ptr<contact::ContactConstraint> makeContinuous(std::shared_ptr<const ContactDefinition> def,
                                                            const MechanicalSystem& system,
                                                            const std::optional<FailurePolicy>& policy,
                                                            const SourceLocation& at) {
   refuse(def->settings.continuous.refused);
+  if (def->settings.continuous.geometryNewton) {
+    refuse({{"ALGO_RESO_GEOM='NEWTON'", def->settings.continuous.geometryAt}});
+  }
   const fem::Modelling modelling = system.model().modelling;
   if (def->hasFriction() &&
       (modelling == fem::Modelling::ThreeD || modelling == fem::Modelling::Axisymmetric)) {
@@ -124,10 +158,6 @@ std::unique_ptr<contact::ContactConstraint> makeContinuous(std::shared_ptr<const
       notImplemented("FROTTEMENT='COULOMB' with ALGO_CONT='PENALISATION' and FORMULATION='CONTINUE'",
                      z.location,
                      "use ALGO_CONT='STANDARD' (COEF_CONT) with ALGO_FROT='STANDARD' or 'PENALISATION'");
-    }
-    if (z.algorithm == ContactAlgorithm::Lac) {
-      notImplemented("ALGO_CONT='LAC' with FORMULATION='CONTINUE'", z.location,
-                     "use ALGO_CONT='STANDARD' or 'PENALISATION'");
     }
     if (z.continuous.adaptation != "NON" && z.continuous.adaptation != "CYCLAGE") {
       notImplemented(fmt::format("ADAPTATION='{}' with FORMULATION='CONTINUE'", z.continuous.adaptation),
@@ -176,6 +206,11 @@ std::unique_ptr<StepConstraint> makeContactConstraint(const KeywordTree& statNon
   }
   checkAgainstSystem(*def, system, at);
   const std::optional<FailurePolicy> policy = interpenetrationPolicy(statNonLine);
+  const bool lac = std::any_of(def->zones.begin(), def->zones.end(),
+                               [](const auto& z) { return z.algorithm == ContactAlgorithm::Lac; });
+  if (def->settings.formulation == contact::Formulation::Continue && lac) {
+    return makeLac(def, system, policy, at);
+  }
   if (def->settings.formulation == contact::Formulation::Continue) {
     auto c = makeContinuous(def, system, policy, at);
     c->initialize();

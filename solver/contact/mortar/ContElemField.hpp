@@ -7,8 +7,8 @@
 //   CONT      1 in contact, 0 otherwise
 //   COEFSURF  the intersection weight (1 when the whole patch is paired)
 //   PRESCOOR  COEFSURF * PRES
-// The LAC formulation that computes the states does not exist yet; the field is built from
-// states given by the caller (tests) and written by IMPR_RESU like any cell field.
+// The LAC formulation (contact/lac/LacContactConstraint) gives the states; the field is written by
+// IMPR_RESU like any cell field.
 
 #include "solver/database/Field.hpp"
 #include "solver/mesh/Mesh.hpp"

@@ -1,0 +1,62 @@
+#pragma once
+// Mortar pairing of LAC contact in 2D and 3D (3D: LacPairing3d.cpp) (DEFI_CONTACT ALGO_CONT='LAC',
+// APPARIEMENT='MORTAR', notice §2.3, §3.1.4): the slave cells (SEG2, SEG3) of each LAC patch
+// (Mesh::lacPatches(), made by CREA_MAILLAGE/DECOUPE_LAC) are intersected exactly with the master cells
+// (SEG2, SEG3) by the segment clipping of mortar/MortarSegments.hpp; candidates come from the R-tree of the
+// master cells' boxes (MasterCellIndex, TYPE_APPA='RAPIDE') or are every master cell ('ROBUSTE').
+//
+// For each patch P, on the overlaps (Gauss points q with slave xi_s, master xi_m, weight w_q):
+//   g_q = n_s . (x_m(xi_m) - x_s(xi_s))       the gap along the slave's outward normal n_s
+//   L_P = sum w_q                              the paired length (x r in AXIS, per radian)
+//   G_P = sum w_q g_q                          the integrated gap; the mean gap is G_P / L_P
+//   dG_P = sum w_q n_s . (N_m du_m - N_s du_s) its gradient (normals and overlaps held fixed)
+// The weights are |dx/dxi| on the initial configuration (TYPE_JACOBIEN='INITIAL') or on the
+// current one ('ACTUALISE'); the overlaps and the gaps are always those of the current positions.
+
+#include "solver/contact/MasterCellIndex.hpp"
+#include "solver/contact/mortar/MortarSegments.hpp"
+#include "solver/nonlinear/DofMap.hpp"
+
+#include <map>
+#include <vector>
+
+namespace stella::contact::lac {
+
+struct LacSlaveCell {
+  CellId cell = -1;
+  int patch = -1;    // index in Mesh::lacPatches()
+  double sign = 1.0; // +1 when (ty, -tx) points out of the slave body
+};
+
+struct LacZoneCells {
+  int zone = -1; // index of the ZONE occurrence
+  std::vector<LacSlaveCell> slaves;
+  std::vector<CellId> masters;
+  bool bruteForce = false;      // TYPE_APPA='ROBUSTE'
+  bool currentJacobian = false; // TYPE_JACOBIEN='ACTUALISE'
+};
+
+// One patch's mortar quantities at a configuration.
+struct LacPatchRow {
+  double length = 0.0;        // the patch's whole length (same Jacobian and r as the weights)
+  double pairedLength = 0.0;  // L_P
+  double integratedGap = 0.0; // G_P
+  std::vector<std::pair<int, double>> gradient; // dG_P on the physical equations (merged)
+};
+
+struct LacPairingOptions {
+  bool axisymmetric = false;
+  int gaussPoints = 3;
+};
+
+// One 3D zone (LacPairing3d.cpp): slave and master faces.
+void pairZone3d(const Mesh& mesh, const LacZoneCells& zone, const std::vector<double>& u, const DofMap& dofs,
+                std::vector<LacPatchRow>& rows, std::vector<std::map<int, double>>& gradients);
+
+// Rows of every patch of mesh.lacPatches() (patches of no zone stay empty, length 0), at the
+// positions X + u (`displacement`: 3 per node, ContactRows.hpp's nodalDisplacement).
+std::vector<LacPatchRow> pairLacPatches(const Mesh& mesh, const std::vector<LacZoneCells>& zones,
+                                        const std::vector<double>& displacement, const DofMap& dofs,
+                                        const LacPairingOptions& options);
+
+} // namespace stella::contact::lac

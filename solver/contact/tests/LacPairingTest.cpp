@@ -1,0 +1,151 @@
+// Mortar pairing of LAC in 2D (contact/lac/LacPairing): the paired lengths and integrated gaps of
+// patches over non-matching master segments against hand values, the gradient against central
+// differences, TYPE_APPA='RAPIDE' (R-tree candidates) against 'ROBUSTE' (every master cell).
+
+#include "solver/contact/lac/LacPairing.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+namespace stella::contact::lac {
+namespace {
+
+// Slave: NS SEG2 cells on y = 0 from x = 0 to 1, grouped in patches of `perPatch` cells, normal
+// (ty, -tx) = (0, -1) pointing down (sign +1). Master: NM SEG2 cells on y = y0 (+ a tilt t x) from
+// x = a to b, oriented right to left (normal up).
+struct Interface {
+  std::shared_ptr<Mesh> mesh = std::make_shared<Mesh>();
+  std::shared_ptr<Model> model;
+  std::unique_ptr<DofMap> dofs;
+  LacZoneCells zone;
+
+  Interface(int ns, int perPatch, int nm, double a, double b, double y0, double tilt = 0.0,
+            double wave = 0.0) {
+    mesh->setDimension(2);
+    std::vector<NodeId> s;
+    for (int i = 0; i <= ns; ++i) {
+      const double x = static_cast<double>(i) / ns;
+      s.push_back(mesh->addNode({x, wave * std::sin(3.0 * x), 0.0}));
+    }
+    std::vector<Mesh::LacPatch> patches;
+    for (int i = 0; i < ns; ++i) {
+      const std::array<NodeId, 2> n{s[static_cast<std::size_t>(i)], s[static_cast<std::size_t>(i + 1)]};
+      const CellId c = mesh->addCell(CellType::SEG2, n);
+      if (i % perPatch == 0) {
+        patches.push_back({"ESCL", {}});
+      }
+      patches.back().cells.push_back(c);
+      zone.slaves.push_back({c, static_cast<int>(patches.size()) - 1, 1.0});
+    }
+    mesh->setLacPatches(patches);
+    std::vector<NodeId> m;
+    for (int j = 0; j <= nm; ++j) {
+      const double x = b - (b - a) * j / nm;
+      m.push_back(mesh->addNode({x, y0 + tilt * x, 0.0}));
+    }
+    for (int j = 0; j < nm; ++j) {
+      const std::array<NodeId, 2> n{m[static_cast<std::size_t>(j)], m[static_cast<std::size_t>(j + 1)]};
+      zone.masters.push_back(mesh->addCell(CellType::SEG2, n));
+    }
+    zone.zone = 0;
+    model = std::make_shared<Model>(mesh);
+    model->components = 2;
+    model->activeNodes.assign(static_cast<std::size_t>(mesh->nodeCount()), true);
+    dofs = std::make_unique<DofMap>(*model);
+  }
+
+  std::vector<LacPatchRow> pair(const std::vector<double>& u) const {
+    return pairLacPatches(*mesh, {zone}, u, *dofs, {});
+  }
+  std::vector<double> zero() const {
+    return std::vector<double>(static_cast<std::size_t>(mesh->nodeCount()) * 3, 0.0);
+  }
+};
+
+TEST(LacPairing, FullyCoveredPatchesOfANonMatchingFlatMaster) {
+  const Interface f(6, 2, 5, -0.2, 1.3, -0.1); // master below, 5 cells of 0.3
+  const auto rows = f.pair(f.zero());
+  ASSERT_EQ(rows.size(), 3u);
+  for (const auto& r : rows) {
+    EXPECT_NEAR(r.length, 1.0 / 3, 1e-14);
+    EXPECT_NEAR(r.pairedLength, 1.0 / 3, 1e-14);
+    EXPECT_NEAR(r.integratedGap / r.pairedLength, 0.1, 1e-14); // open by 0.1 along the slave normal
+    // dG/du: -w N_s n_s on the slave DOFs (n_s = (0, -1): +w N_s on DY), +w N_m n_s on the master's
+    double slaveDy = 0.0;
+    double masterDy = 0.0;
+    for (const auto& [e, v] : r.gradient) {
+      const NodeId n = f.dofs->node(e);
+      if (f.dofs->component(e) == 1) {
+        (n <= 6 ? slaveDy : masterDy) += v;
+      } else {
+        EXPECT_NEAR(v, 0.0, 1e-15);
+      }
+    }
+    EXPECT_NEAR(slaveDy, 1.0 / 3, 1e-14);
+    EXPECT_NEAR(masterDy, -1.0 / 3, 1e-14);
+  }
+}
+
+TEST(LacPairing, PartlyCoveredPatchHasItsPairedLength) {
+  const Interface f(6, 3, 3, 0.25, 1.75, -0.05); // the master starts at x = 0.25
+  const auto rows = f.pair(f.zero());
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_NEAR(rows[0].length, 0.5, 1e-14);
+  EXPECT_NEAR(rows[0].pairedLength, 0.25, 1e-14); // COEFSURF 0.5
+  EXPECT_NEAR(rows[1].pairedLength, 0.5, 1e-14);
+  EXPECT_NEAR(rows[0].integratedGap, 0.25 * 0.05, 1e-15);
+}
+
+TEST(LacPairing, IntegratedGapOfATiltedMasterIsExact) {
+  // master y = -0.1 + 0.2 x under the whole slave: the gap along (0, -1) is 0.1 - 0.2 x
+  const Interface f(4, 2, 3, -0.1, 1.2, -0.1, 0.2);
+  const auto rows = f.pair(f.zero());
+  ASSERT_EQ(rows.size(), 2u);
+  // integral of (0.1 - 0.2 x) over [0, 0.5] and [0.5, 1]
+  EXPECT_NEAR(rows[0].integratedGap, 0.05 - 0.1 * 0.25, 1e-14);
+  EXPECT_NEAR(rows[1].integratedGap, 0.05 - 0.1 * 0.75, 1e-14);
+}
+
+TEST(LacPairing, GradientEqualsCentralDifferencesForNormalMotions) {
+  // parallel surfaces, fully covered: normal motions move the gap linearly at first order
+  const Interface f(6, 2, 5, -0.2, 1.3, -0.1);
+  const auto u0 = f.zero();
+  const auto rows = f.pair(u0);
+  const double h = 1e-6;
+  for (NodeId n = 0; n < f.mesh->nodeCount(); ++n) {
+    auto up = u0;
+    auto down = u0;
+    up[static_cast<std::size_t>(n) * 3 + 1] += h;
+    down[static_cast<std::size_t>(n) * 3 + 1] -= h;
+    const auto rp = f.pair(up);
+    const auto rm = f.pair(down);
+    const int e = f.dofs->dof(n, 1);
+    for (std::size_t p = 0; p < rows.size(); ++p) {
+      double analytic = 0.0;
+      for (const auto& [k, v] : rows[p].gradient) {
+        analytic += k == e ? v : 0.0;
+      }
+      const double numeric = (rp[p].integratedGap - rm[p].integratedGap) / (2 * h);
+      EXPECT_NEAR(analytic, numeric, 1e-8) << "node " << n << " patch " << p;
+    }
+  }
+}
+
+TEST(LacPairing, RapideEqualsRobuste) {
+  Interface f(17, 3, 11, -0.3, 1.4, -0.02, 0.03, 0.01); // wavy slave, tilted master
+  const auto fast = f.pair(f.zero());
+  f.zone.bruteForce = true;
+  const auto all = f.pair(f.zero());
+  ASSERT_EQ(fast.size(), all.size());
+  for (std::size_t p = 0; p < fast.size(); ++p) {
+    EXPECT_GT(fast[p].pairedLength, 0.0);
+    EXPECT_DOUBLE_EQ(fast[p].pairedLength, all[p].pairedLength) << p;
+    EXPECT_DOUBLE_EQ(fast[p].integratedGap, all[p].integratedGap) << p;
+    EXPECT_EQ(fast[p].gradient, all[p].gradient) << p;
+  }
+}
+
+} // namespace
+} // namespace stella::contact::lac
