@@ -52,7 +52,12 @@ struct ContinuousZone {
   bool frictionPenalised = false;      // ALGO_FROT='PENALISATION' (else STANDARD)
   double frictionAugmentation = 100.0; // COEF_FROT (ALGO_FROT='STANDARD')
   double frictionPenalty = 0.0;        // COEF_PENA_FROT (ALGO_FROT='PENALISATION')
-  std::vector<Unimplemented> refused;  // INTEGRATION other than AUTO, DIST_*, GLISSIERE...
+  std::optional<double> initialThreshold;        // SEUIL_INIT (FROTTEMENT='COULOMB')
+  std::vector<std::string> frictionExcludedGroups; // SANS_GROUP_NO_FR
+  SourceLocation frictionExcludedAt;
+  std::optional<std::array<double, 3>> excludedDirection; // DIRE_EXCL_FROT
+  SourceLocation excludedDirectionAt;
+  std::vector<Unimplemented> refused; // INTEGRATION other than AUTO, DIST_*...
 };
 
 // One ZONE occurrence.
