@@ -49,10 +49,10 @@ struct ContinuousZone {
   double initDistance = -1.0;                      // DIST_MAXI (< 0: no limit)
   std::string adaptation = "CYCLAGE";              // ADAPTATION
   SourceLocation adaptationAt;
-  bool frictionPenalised = false;      // ALGO_FROT='PENALISATION' (else STANDARD)
-  double frictionAugmentation = 100.0; // COEF_FROT (ALGO_FROT='STANDARD')
-  double frictionPenalty = 0.0;        // COEF_PENA_FROT (ALGO_FROT='PENALISATION')
-  std::optional<double> initialThreshold;        // SEUIL_INIT (FROTTEMENT='COULOMB')
+  bool frictionPenalised = false;                  // ALGO_FROT='PENALISATION' (else STANDARD)
+  double frictionAugmentation = 100.0;             // COEF_FROT (ALGO_FROT='STANDARD')
+  double frictionPenalty = 0.0;                    // COEF_PENA_FROT (ALGO_FROT='PENALISATION')
+  std::optional<double> initialThreshold;          // SEUIL_INIT (FROTTEMENT='COULOMB')
   std::vector<std::string> frictionExcludedGroups; // SANS_GROUP_NO_FR
   SourceLocation frictionExcludedAt;
   std::optional<std::array<double, 3>> excludedDirection; // DIRE_EXCL_FROT

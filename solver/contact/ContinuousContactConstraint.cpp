@@ -287,7 +287,7 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
   // (A - mu sum_j e_j T_j, e = q / |q| the sliding direction).
   struct Multiplier {
     Eigen::Index row;
-    int tangent;                     // -1: normal; else the friction direction
+    int tangent;                      // -1: normal; else the friction direction
     Eigen::Vector2d frictionCoupling; // the coefficients of T_j in C (normal multipliers)
   };
   const Eigen::MatrixXd slip = friction() ? slipsAt(u) : Eigen::MatrixXd();
@@ -519,7 +519,8 @@ void ContinuousContactConstraint::accepted(const std::vector<LinkState>& rowStat
     const double w = weight_(static_cast<Eigen::Index>(i));
     lagsC_[k] = w > 0.0 ? -rowStates[i].normalForce / w : 0.0;
     contactLink_[k] = rowStates[i].status != LinkStatus::Open ? 1 : 0;
-    closed_[k] = closed_[k] != 0 || (contactLink_[k] != 0 && definition_->zones[static_cast<std::size_t>(links_[k].zone)].slide)
+    closed_[k] = closed_[k] != 0 || (contactLink_[k] != 0 &&
+                                     definition_->zones[static_cast<std::size_t>(links_[k].zone)].slide)
                      ? 1
                      : 0; // GLISSIERE: held closed from now on
     if (friction()) {

@@ -31,16 +31,15 @@
 //   tangential pressure lambda_t of each slave node, a vector of the tangent plane in 3D
 //   ((LAGS_F1, LAGS_F2) = lambda_t / (mu |LAGS_C|) on the pairing's tangents), the slip
 //   s = T (u - u_start) since the start of the step. The Coulomb cone is a disc: |q| against the
-//   threshold, sliding along q / |q| (the consistent tangent of that direction in 3D). Indicator q = lambda_t + rho_t s (ALGO_FROT='STANDARD',
-//   rho_t = COEF_FROT) or lambda_t,start + rho_t s ('PENALISATION', COEF_PENA_FROT: the return
-//   mapping of a penalty spring, lambda_t,start that of the step's start); threshold mu |lambda_n|
-//   (ALGO_RESO_FROT='NEWTON': the current LAGS_C; 'POINT_FIXE': the LAGS_C of the last friction
-//   loop). Stick (|q| < threshold): STANDARD adds the row s = 0 to the Schur complement (tangent
-//   rho_t w T1^T T1), PENALISATION the force -w q T1 (same tangent); slip: the force
-//   -w sign(q) mu |lambda_n| T1, which with NEWTON depends on lambda_n: the column of that node's
-//   normal multiplier becomes A - sign(q) mu T1 and the (small, dense) Schur complement is
-//   non-symmetric (LU); the factorised K stays symmetric.
-//   CONTACT_INIT: the status of the first step (OUI: every paired node; INTERPENETRE: the nodes
+//   threshold, sliding along q / |q| (the consistent tangent of that direction in 3D). Indicator q = lambda_t
+//   + rho_t s (ALGO_FROT='STANDARD', rho_t = COEF_FROT) or lambda_t,start + rho_t s ('PENALISATION',
+//   COEF_PENA_FROT: the return mapping of a penalty spring, lambda_t,start that of the step's start);
+//   threshold mu |lambda_n| (ALGO_RESO_FROT='NEWTON': the current LAGS_C; 'POINT_FIXE': the LAGS_C of the
+//   last friction loop). Stick (|q| < threshold): STANDARD adds the row s = 0 to the Schur complement
+//   (tangent rho_t w T1^T T1), PENALISATION the force -w q T1 (same tangent); slip: the force -w sign(q) mu
+//   |lambda_n| T1, which with NEWTON depends on lambda_n: the column of that node's normal multiplier becomes
+//   A - sign(q) mu T1 and the (small, dense) Schur complement is non-symmetric (LU); the factorised K stays
+//   symmetric. CONTACT_INIT: the status of the first step (OUI: every paired node; INTERPENETRE: the nodes
 //   with g < 0, within DIST_MAXI when given; NON: none).
 
 #include "solver/contact/ContactConstraint.hpp"
@@ -110,7 +109,9 @@ private:
   // The rows of the friction directions (built by frictionPaired: the pairing's tangents, or what
   // SANS_GROUP_NO_FR / DIRE_EXCL_FROT leave of them) and their number per row (0, 1 or 2).
   void frictionPaired();
-  const SparseRows& frictionRow(int direction) const { return frictionRows_[static_cast<std::size_t>(direction)]; }
+  const SparseRows& frictionRow(int direction) const {
+    return frictionRows_[static_cast<std::size_t>(direction)];
+  }
   int frictionDirections(Eigen::Index row) const;
   // After a correction: the multipliers of the sliding rows follow the threshold (STANDARD).
   void updateSlidingPressures(const Eigen::VectorXd& u, const std::vector<char>& status);
@@ -146,11 +147,11 @@ private:
   std::vector<Eigen::Vector2d> lagsF_;      // per link: tangential pressure along the friction directions
   std::vector<Eigen::Vector2d> lagsFStart_; // per link, at the start of the step
   std::array<SparseRows, 2> frictionRows_;  // per row: the friction directions
-  std::vector<Eigen::Matrix2d> basis_;      // per row: friction direction j = basis(j, :) (tangent1, tangent2)
-  std::vector<int> directions_;             // per row: number of friction directions
-  std::vector<char> closed_;                // per link: held closed (GLISSIERE='OUI')
-  std::vector<double> threshold_;     // per link: frozen threshold pressure (POINT_FIXE)
-  std::vector<double> lastThreshold_; // per link: |LAGS_C| at the previous correction (RESI_FROT)
+  std::vector<Eigen::Matrix2d> basis_; // per row: friction direction j = basis(j, :) (tangent1, tangent2)
+  std::vector<int> directions_;        // per row: number of friction directions
+  std::vector<char> closed_;           // per link: held closed (GLISSIERE='OUI')
+  std::vector<double> threshold_;      // per link: frozen threshold pressure (POINT_FIXE)
+  std::vector<double> lastThreshold_;  // per link: |LAGS_C| at the previous correction (RESI_FROT)
   int frictionIterations_ = 0;
 };
 
