@@ -91,12 +91,20 @@ ContinuousZone readContinuousZone(const KeywordTree& z) {
   refuseUnless(z, "INTEGRATION", "AUTO", c.refused);
   refuseUnless(z, "DIST_POUTRE", "NON", c.refused);
   refuseUnless(z, "DIST_COQUE", "NON", c.refused);
-  refuseUnless(z, "GLISSIERE", "NON", c.refused);
   refusePresent(z, "DIST_MAIT", c.refused);
   refusePresent(z, "DIST_ESCL", c.refused);
   refusePresent(z, "PENE_MAXI", c.refused);
-  refusePresent(z, "SEUIL_INIT", c.refused);
-  refusePresent(z, "SANS_GROUP_NO_FR", c.refused);
+  if (z.has("SEUIL_INIT")) { // FROTTEMENT='COULOMB'
+    c.initialThreshold = z.real("SEUIL_INIT");
+  }
+  if (z.has("SANS_GROUP_NO_FR")) {
+    c.frictionExcludedGroups = z.texts("SANS_GROUP_NO_FR");
+    c.frictionExcludedAt = z.locationOf("SANS_GROUP_NO_FR");
+  }
+  if (z.has("DIRE_EXCL_FROT")) {
+    c.excludedDirection = vector3(z, "DIRE_EXCL_FROT");
+    c.excludedDirectionAt = z.locationOf("DIRE_EXCL_FROT");
+  }
   if (z.has("TOLE_INTERP") && z.real("TOLE_INTERP") != 0.0) {
     c.refused.push_back({"TOLE_INTERP (other than its default 0)", z.locationOf("TOLE_INTERP")});
   }

@@ -49,12 +49,17 @@ struct ContinuousZone {
   double initDistance = -1.0;                      // DIST_MAXI (< 0: no limit)
   std::string adaptation = "CYCLAGE";              // ADAPTATION
   SourceLocation adaptationAt;
-  bool frictionPenalised = false;      // ALGO_FROT='PENALISATION' (else STANDARD)
-  double frictionAugmentation = 100.0; // COEF_FROT (ALGO_FROT='STANDARD')
-  double frictionPenalty = 0.0;        // COEF_PENA_FROT (ALGO_FROT='PENALISATION')
-  bool lacBruteForce = false;          // TYPE_APPA='ROBUSTE' (ALGO_CONT='LAC'; else RAPIDE)
-  bool lacCurrentJacobian = false;     // TYPE_JACOBIEN='ACTUALISE' (ALGO_CONT='LAC'; else INITIAL)
-  std::vector<Unimplemented> refused;  // INTEGRATION other than AUTO, DIST_*, GLISSIERE...
+  bool frictionPenalised = false;                  // ALGO_FROT='PENALISATION' (else STANDARD)
+  double frictionAugmentation = 100.0;             // COEF_FROT (ALGO_FROT='STANDARD')
+  double frictionPenalty = 0.0;                    // COEF_PENA_FROT (ALGO_FROT='PENALISATION')
+  std::optional<double> initialThreshold;          // SEUIL_INIT (FROTTEMENT='COULOMB')
+  std::vector<std::string> frictionExcludedGroups; // SANS_GROUP_NO_FR
+  SourceLocation frictionExcludedAt;
+  std::optional<std::array<double, 3>> excludedDirection; // DIRE_EXCL_FROT
+  SourceLocation excludedDirectionAt;
+  bool lacBruteForce = false;         // TYPE_APPA='ROBUSTE' (ALGO_CONT='LAC'; else RAPIDE)
+  bool lacCurrentJacobian = false;    // TYPE_JACOBIEN='ACTUALISE' (ALGO_CONT='LAC'; else INITIAL)
+  std::vector<Unimplemented> refused; // INTEGRATION other than AUTO, DIST_*...
 };
 
 // One ZONE occurrence.

@@ -143,15 +143,6 @@ std::unique_ptr<contact::ContactConstraint> makeContinuous(std::shared_ptr<const
   if (def->settings.continuous.geometryNewton) {
     refuse({{"ALGO_RESO_GEOM='NEWTON'", def->settings.continuous.geometryAt}});
   }
-  const fem::Modelling modelling = system.model().modelling;
-  if (def->hasFriction() &&
-      (modelling == fem::Modelling::ThreeD || modelling == fem::Modelling::Axisymmetric)) {
-    notImplemented(fmt::format("FROTTEMENT='COULOMB' with FORMULATION='CONTINUE' on a {} model",
-                               fem::modellingName(modelling)),
-                   def->settings.frictionAt,
-                   "continuous friction is implemented for D_PLAN and C_PLAN models; in 3D or AXIS use "
-                   "FORMULATION='DISCRETE', ALGO_CONT='PENALISATION' with friction");
-  }
   for (const auto& z : def->zones) {
     refuse(z.continuous.refused);
     if (def->hasFriction() && z.algorithm == ContactAlgorithm::ContinuePenalty) {

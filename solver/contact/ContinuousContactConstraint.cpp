@@ -121,8 +121,8 @@ void ContinuousContactConstraint::paired() {
   lagsCStart_.resize(links_.size(), 0.0);
   contactLink_.resize(links_.size(), 0);
   status_.resize(links_.size(), 0);
-  lagsF_.resize(links_.size(), 0.0);
-  lagsFStart_.resize(links_.size(), 0.0);
+  lagsF_.resize(links_.size(), Eigen::Vector2d::Zero());
+  lagsFStart_.resize(links_.size(), Eigen::Vector2d::Zero());
   threshold_.resize(links_.size(), 0.0);
   if (weightLink_.size() != links_.size()) {
     computeWeights(); // once: on the initial configuration, and links are the slave nodes
@@ -134,9 +134,10 @@ void ContinuousContactConstraint::paired() {
   for (std::size_t k = 0; k < links_.size(); ++k) {
     if (hasRow[k] == 0) {
       lagsC_[k] = 0.0; // not paired (or not resolved): no contact pressure
-      lagsF_[k] = 0.0;
+      lagsF_[k].setZero();
     }
   }
+  frictionPaired();
   const auto m = static_cast<Eigen::Index>(rows_.link.size());
   weight_.resize(m);
   coefficient_.resize(m);
@@ -163,7 +164,7 @@ bool ContinuousContactConstraint::penalised(Eigen::Index row) const {
 std::vector<char> ContinuousContactConstraint::statusAt(const Eigen::VectorXd& u) const {
   std::vector<char> s(links_.size(), 0);
   const Eigen::VectorXd g = gapsAt(u);
-  const Eigen::VectorXd slip = friction() ? slipsAt(u) : Eigen::VectorXd();
+  const Eigen::MatrixXd slip = friction() ? slipsAt(u) : Eigen::MatrixXd();
   for (Eigen::Index i = 0; i < g.size(); ++i) {
     const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(i)]);
     if (k < frozen_.size() && frozen_[k] >= 0) {
@@ -171,10 +172,10 @@ std::vector<char> ContinuousContactConstraint::statusAt(const Eigen::VectorXd& u
     } else {
       // a node of zero weight (on the axis of an AXIS model) carries no contact force
       const double indicator = penalised(i) ? g(i) : lagsC_[k] + coefficient_(i) * g(i);
-      s[k] = indicator < 0.0 && weight_(i) > 0.0 ? 1 : 0;
+      s[k] = (indicator < 0.0 || heldClosed(k)) && weight_(i) > 0.0 ? 1 : 0;
     }
     if (s[k] != 0 && friction()) {
-      s[k] = frictionStatus(i, slip(i));
+      s[k] = frictionStatus(i, slip.row(i).transpose());
     }
   }
   return s;
@@ -222,6 +223,7 @@ void ContinuousContactConstraint::beginStep(const Eigen::VectorXd& u, double tim
       break;
     }
   }
+  applyInitialThreshold(); // SEUIL_INIT, GLISSIERE
 }
 
 void ContinuousContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::VectorXd& forces,
@@ -233,7 +235,7 @@ void ContinuousContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::Vec
   const std::vector<char>& status = currentStatus(u);
   const Eigen::VectorXd g = gapsAt(u);
   const SparseRows& a = rows_.problem.A;
-  const Eigen::VectorXd slip = friction() ? slipsAt(u) : Eigen::VectorXd();
+  const Eigen::MatrixXd slip = friction() ? slipsAt(u) : Eigen::MatrixXd();
   int active = 0;
   double penetration = 0.0;
   for (Eigen::Index i = 0; i < m; ++i) {
@@ -260,7 +262,7 @@ void ContinuousContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::Vec
       }
     }
     if (friction()) {
-      addFrictionForces(i, status[k], slip(i), forces, tangent);
+      addFrictionForces(i, status[k], slip.row(i).transpose(), forces, tangent);
     }
   }
   noteActive_ = active;
@@ -279,15 +281,16 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
   recordThreshold();
   // The multipliers solving the Schur complement: the normal ones of the augmented-Lagrangian rows
   // in contact and (ALGO_FROT='STANDARD') the tangential ones of the sticking rows. Each has its
-  // constraint row B (A, or T1: the gap, or the slip, vanishes) and its force column C (the
-  // derivative of the forces with respect to it): C = B except for the normal multiplier of a
-  // node sliding with ALGO_RESO_FROT='NEWTON', whose friction force follows it (A - sign mu T1).
+  // constraint row B (A, or T_j: the gap, or the slip along friction direction j, vanishes) and its
+  // force column C (the derivative of the forces with respect to it): C = B except for the normal
+  // multiplier of a node sliding with ALGO_RESO_FROT='NEWTON', whose friction force follows it
+  // (A - mu sum_j e_j T_j, e = q / |q| the sliding direction).
   struct Multiplier {
     Eigen::Index row;
-    bool tangential;
-    double frictionCoupling; // the coefficient of T1 in C (normal multipliers)
+    int tangent;                      // -1: normal; else the friction direction
+    Eigen::Vector2d frictionCoupling; // the coefficients of T_j in C (normal multipliers)
   };
-  const Eigen::VectorXd slip = friction() ? slipsAt(u) : Eigen::VectorXd();
+  const Eigen::MatrixXd slip = friction() ? slipsAt(u) : Eigen::MatrixXd();
   const bool newtonFriction = friction() && !definition_->settings.continuous.frictionFixedPoint;
   std::vector<Multiplier> contact;
   for (Eigen::Index i = 0; i < m; ++i) {
@@ -297,16 +300,19 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
     }
     if (status[k] == 0) {
       lagsC_[k] = 0.0; // -(w / rho) lambda = 0
-      lagsF_[k] = 0.0;
+      lagsF_[k].setZero();
       continue;
     }
-    double coupling = 0.0;
-    if (newtonFriction && status[k] >= 2 && lagsC_[k] < 0.0) {
-      coupling = -(status[k] == 2 ? 1.0 : -1.0) * coulombOfRow(i);
+    Eigen::Vector2d coupling = Eigen::Vector2d::Zero();
+    if (newtonFriction && status[k] == 2 && lagsC_[k] < 0.0) {
+      const Eigen::Vector2d q = indicator(i, slip.row(i).transpose());
+      coupling = q.norm() > 0.0 ? Eigen::Vector2d(-coulombOfRow(i) / q.norm() * q) : coupling;
     }
-    contact.push_back({i, false, coupling});
+    contact.push_back({i, -1, coupling});
     if (friction() && status[k] == 1 && !zoneOfRow(i).frictionPenalised) {
-      contact.push_back({i, true, 0.0});
+      for (int j = 0; j < frictionDirections(i); ++j) {
+        contact.push_back({i, j, Eigen::Vector2d::Zero()});
+      }
     }
   }
   addContactIterations(1);
@@ -314,22 +320,25 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
     return;
   }
   const SparseRows& a = rows_.problem.A;
-  const SparseRows* t1 = friction() ? &rows_.friction.T1 : nullptr;
-  const auto constraintRow = [&](const Multiplier& c) -> const SparseRows& { return c.tangential ? *t1 : a; };
+  const auto constraintRow = [&](const Multiplier& c) -> const SparseRows& {
+    return c.tangent < 0 ? a : frictionRow(c.tangent);
+  };
   // Adds factor x C_j into the dense vector v (the force column of multiplier j).
   const auto addColumn = [&](const Multiplier& c, double factor, auto&& v) {
     for (SparseRows::InnerIterator it(constraintRow(c), c.row); it; ++it) {
       v(it.col()) += factor * it.value();
     }
-    if (c.frictionCoupling != 0.0) {
-      for (SparseRows::InnerIterator it(*t1, c.row); it; ++it) {
-        v(it.col()) += factor * c.frictionCoupling * it.value();
+    for (int j = 0; j < 2; ++j) {
+      if (c.frictionCoupling(j) != 0.0) {
+        for (SparseRows::InnerIterator it(frictionRow(j), c.row); it; ++it) {
+          v(it.col()) += factor * c.frictionCoupling(j) * it.value();
+        }
       }
     }
   };
   bool symmetricSchur = true;
   for (const auto& c : contact) {
-    symmetricSchur = symmetricSchur && c.frictionCoupling == 0.0;
+    symmetricSchur = symmetricSchur && c.frictionCoupling.isZero(0.0);
   }
   const auto mc = static_cast<Eigen::Index>(contact.size());
   const Eigen::Index n = ddu.size();
@@ -358,7 +367,7 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
     for (SparseRows::InnerIterator it(constraintRow(c), c.row); it; ++it) {
       bdu += it.value() * ddu(it.col());
     }
-    rhs(i) = (c.tangential ? slip(c.row) : g(c.row)) + bdu;
+    rhs(i) = (c.tangent >= 0 ? slip(c.row, c.tangent) : g(c.row)) + bdu;
   }
   Eigen::VectorXd y;
   if (symmetricSchur) {
@@ -387,7 +396,7 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
     const Multiplier& c = contact[static_cast<std::size_t>(j)];
     addColumn(c, y(j), f);
     const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(c.row)]);
-    (c.tangential ? lagsF_[k] : lagsC_[k]) += y(j) / weight_(c.row);
+    (c.tangent >= 0 ? lagsF_[k](c.tangent) : lagsC_[k]) += y(j) / weight_(c.row);
   }
   Eigen::VectorXd dx;
   Eigen::VectorXd dy;
@@ -396,14 +405,7 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
   if (dy.size() == dlambda.size()) {
     dlambda -= dy;
   }
-  if (friction()) {
-    for (const auto& c : contact) {
-      const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(c.row)]);
-      if (!c.tangential && status[k] >= 2) {
-        lagsF_[k] = tangentialPressure(c.row, status[k], 0.0); // sign(q) mu |lambda_n| after the update
-      }
-    }
-  }
+  updateSlidingPressures(u + ddu, status); // mu |lambda_n| q / |q| after the update
 }
 
 void ContinuousContactConstraint::redundant(Eigen::Index row) const {
@@ -495,7 +497,7 @@ std::string ContinuousContactConstraint::continuationNote() const {
 std::vector<LinkState> ContinuousContactConstraint::resolvedStates(const Eigen::VectorXd& u) const {
   const Eigen::VectorXd g = gapsAt(u);
   const std::vector<char> status = statusAt(u);
-  const Eigen::VectorXd slip = friction() ? slipsAt(u) : Eigen::VectorXd();
+  const Eigen::MatrixXd slip = friction() ? slipsAt(u) : Eigen::MatrixXd();
   std::vector<LinkState> states(rows_.link.size());
   for (std::size_t i = 0; i < states.size(); ++i) {
     const auto row = static_cast<Eigen::Index>(i);
@@ -505,10 +507,7 @@ std::vector<LinkState> ContinuousContactConstraint::resolvedStates(const Eigen::
     states[i].normalForce = -weight_(row) * lambda;
     states[i].status = status[k] != 0 ? LinkStatus::Sliding : LinkStatus::Open;
     if (friction() && status[k] != 0) {
-      const double s = slip(row);
-      states[i].slip[0] = s;
-      states[i].friction[0] = -weight_(row) * tangentialPressure(row, status[k], s);
-      states[i].status = status[k] == 1 ? LinkStatus::Sticking : LinkStatus::Sliding;
+      frictionState(row, status[k], slip.row(row).transpose(), states[i]);
     }
   }
   return states;
@@ -520,11 +519,14 @@ void ContinuousContactConstraint::accepted(const std::vector<LinkState>& rowStat
     const double w = weight_(static_cast<Eigen::Index>(i));
     lagsC_[k] = w > 0.0 ? -rowStates[i].normalForce / w : 0.0;
     contactLink_[k] = rowStates[i].status != LinkStatus::Open ? 1 : 0;
+    closed_[k] = closed_[k] != 0 || (contactLink_[k] != 0 &&
+                                     definition_->zones[static_cast<std::size_t>(links_[k].zone)].slide)
+                     ? 1
+                     : 0; // GLISSIERE: held closed from now on
     if (friction()) {
-      lagsF_[k] = w > 0.0 ? -rowStates[i].friction[0] / w : 0.0;
-      // the next step starts sliding the same way, or sticking
-      const char sliding = lagsF_[k] >= 0.0 ? 2 : 3;
-      contactLink_[k] = rowStates[i].status == LinkStatus::Sliding ? sliding : contactLink_[k];
+      acceptFrictionState(static_cast<Eigen::Index>(i), rowStates[i]);
+      // the next step starts sliding, or sticking
+      contactLink_[k] = rowStates[i].status == LinkStatus::Sliding ? 2 : contactLink_[k];
     }
   }
   lagsCStart_ = lagsC_;
@@ -546,6 +548,9 @@ void ContinuousContactConstraint::store(ResultStep& step) const {
   components.push_back("LAGS_C");
   if (friction()) {
     components.push_back("LAGS_F1");
+    if (rows_.friction.T2.rows() > 0) {
+      components.push_back("LAGS_F2");
+    }
   }
   const std::size_t nodes = depl.entityCount();
   const std::size_t c0 = depl.componentCount();
@@ -566,14 +571,9 @@ void ContinuousContactConstraint::store(ResultStep& step) const {
     const auto n = static_cast<std::size_t>(links_[k].slave);
     out->value(n, c0) = k < lagsC_.size() ? lagsC_[k] : 0.0;
     out->setDefined(n, c0);
-    if (friction()) {
-      // LAGS_F1: the tangential pressure over the Coulomb threshold mu |LAGS_C| (|LAGS_F1| <= 1, 1
-      // sliding), along the pairing's tangent; 0 out of contact
-      const double mu = definition_->zones[static_cast<std::size_t>(links_[k].zone)].coulomb;
-      const double limit = k < lagsC_.size() ? mu * std::max(0.0, -lagsC_[k]) : 0.0;
-      out->value(n, c0 + 1) = limit > 0.0 ? lagsF_[k] / limit : 0.0;
-      out->setDefined(n, c0 + 1);
-    }
+  }
+  if (friction()) {
+    storeFriction(*out, c0 + 1); // LAGS_F1, LAGS_F2
   }
   step.fields["DEPL"] = out;
 }

@@ -27,22 +27,25 @@
 //   current (u, lambda) (generalised Newton); a step converges when the status no longer changes.
 //   'POINT_FIXE': the status is frozen during the Newton iterations and re-evaluated at their
 //   convergence (at most ITER_CONT_MAXI, or ITER_CONT_MULT x slave nodes, status loops).
-//   Friction (FROTTEMENT='COULOMB', D_PLAN/C_PLAN, ContinuousContactFriction.cpp): the tangential
-//   pressure lambda_t of each slave node (LAGS_F1 = lambda_t / (mu |LAGS_C|)), the slip s = T1 (u -
-//   u_start) since the start of the step. Indicator q = lambda_t + rho_t s (ALGO_FROT='STANDARD',
-//   rho_t = COEF_FROT) or lambda_t,start + rho_t s ('PENALISATION', COEF_PENA_FROT: the return
-//   mapping of a penalty spring, lambda_t,start that of the step's start); threshold mu |lambda_n|
-//   (ALGO_RESO_FROT='NEWTON': the current LAGS_C; 'POINT_FIXE': the LAGS_C of the last friction
-//   loop). Stick (|q| < threshold): STANDARD adds the row s = 0 to the Schur complement (tangent
-//   rho_t w T1^T T1), PENALISATION the force -w q T1 (same tangent); slip: the force
-//   -w sign(q) mu |lambda_n| T1, which with NEWTON depends on lambda_n: the column of that node's
-//   normal multiplier becomes A - sign(q) mu T1 and the (small, dense) Schur complement is
-//   non-symmetric (LU); the factorised K stays symmetric.
-//   CONTACT_INIT: the status of the first step (OUI: every paired node; INTERPENETRE: the nodes
+//   Friction (FROTTEMENT='COULOMB', D_PLAN/C_PLAN/AXIS/3D, ContinuousContactFriction.cpp): the
+//   tangential pressure lambda_t of each slave node, a vector of the tangent plane in 3D
+//   ((LAGS_F1, LAGS_F2) = lambda_t / (mu |LAGS_C|) on the pairing's tangents), the slip
+//   s = T (u - u_start) since the start of the step. The Coulomb cone is a disc: |q| against the
+//   threshold, sliding along q / |q| (the consistent tangent of that direction in 3D). Indicator q = lambda_t
+//   + rho_t s (ALGO_FROT='STANDARD', rho_t = COEF_FROT) or lambda_t,start + rho_t s ('PENALISATION',
+//   COEF_PENA_FROT: the return mapping of a penalty spring, lambda_t,start that of the step's start);
+//   threshold mu |lambda_n| (ALGO_RESO_FROT='NEWTON': the current LAGS_C; 'POINT_FIXE': the LAGS_C of the
+//   last friction loop). Stick (|q| < threshold): STANDARD adds the row s = 0 to the Schur complement
+//   (tangent rho_t w T1^T T1), PENALISATION the force -w q T1 (same tangent); slip: the force -w sign(q) mu
+//   |lambda_n| T1, which with NEWTON depends on lambda_n: the column of that node's normal multiplier becomes
+//   A - sign(q) mu T1 and the (small, dense) Schur complement is non-symmetric (LU); the factorised K stays
+//   symmetric. CONTACT_INIT: the status of the first step (OUI: every paired node; INTERPENETRE: the nodes
 //   with g < 0, within DIST_MAXI when given; NON: none).
 
 #include "solver/contact/ContactConstraint.hpp"
 #include "solver/fem/Modelling.hpp"
+
+#include <array>
 
 namespace stella::contact {
 
@@ -87,21 +90,39 @@ private:
   void computeWeights();
   [[noreturn]] void redundant(Eigen::Index row) const; // CONTACT_11 naming the row's slave node
   // Friction (ContinuousContactFriction.cpp). Status codes per link: 0 open, 1 contact (and
-  // sticking with friction), 2 sliding with sign(q) > 0, 3 sliding with sign(q) < 0.
+  // sticking with friction), 2 sliding (along the direction of the indicator q).
   bool friction() const { return definition_->hasFriction(); }
   const ContinuousZone& zoneOfRow(Eigen::Index row) const;
   double coulombOfRow(Eigen::Index row) const;
-  Eigen::VectorXd slipsAt(const Eigen::VectorXd& u) const;
+  // The slip of each row along its friction directions (rows x 2; the second column zero in 2D).
+  Eigen::MatrixXd slipsAt(const Eigen::VectorXd& u) const;
   // The threshold pressure |lambda_n| of link k (NEWTON: current LAGS_C; POINT_FIXE: frozen).
   double thresholdPressure(std::size_t k) const;
-  // lambda_t of the indicator q = base + rho_t s (STANDARD: the multiplier; PENALISATION: the
-  // tangential pressure at the start of the step)
-  double trialBase(std::size_t k, const ContinuousZone& z) const;
-  char frictionStatus(Eigen::Index row, double slip) const;
-  // The tangential pressure of a row in contact with status s at slip `slip`.
-  double tangentialPressure(Eigen::Index row, char s, double slip) const;
-  void addFrictionForces(Eigen::Index row, char s, double slip, Eigen::VectorXd& forces,
+  // The indicator q = base + rho_t s (STANDARD: base the multiplier; PENALISATION: the tangential
+  // pressure at the start of the step).
+  Eigen::Vector2d indicator(Eigen::Index row, const Eigen::Vector2d& slip) const;
+  char frictionStatus(Eigen::Index row, const Eigen::Vector2d& slip) const;
+  // The tangential pressure of a row in contact with status s at slip `slip` (friction directions).
+  Eigen::Vector2d tangentialPressure(Eigen::Index row, char s, const Eigen::Vector2d& slip) const;
+  void addFrictionForces(Eigen::Index row, char s, const Eigen::Vector2d& slip, Eigen::VectorXd& forces,
                          std::vector<Eigen::Triplet<double>>* tangent) const;
+  // The rows of the friction directions (built by frictionPaired: the pairing's tangents, or what
+  // SANS_GROUP_NO_FR / DIRE_EXCL_FROT leave of them) and their number per row (0, 1 or 2).
+  void frictionPaired();
+  const SparseRows& frictionRow(int direction) const {
+    return frictionRows_[static_cast<std::size_t>(direction)];
+  }
+  int frictionDirections(Eigen::Index row) const;
+  // After a correction: the multipliers of the sliding rows follow the threshold (STANDARD).
+  void updateSlidingPressures(const Eigen::VectorXd& u, const std::vector<char>& status);
+  // LinkState friction and slip (pairing tangents) of a row, and back.
+  void frictionState(Eigen::Index row, char s, const Eigen::Vector2d& slip, LinkState& state) const;
+  void acceptFrictionState(Eigen::Index row, const LinkState& state);
+  // SEUIL_INIT: the contact pressure of the nodes in contact at the first step's start.
+  void applyInitialThreshold();
+  // GLISSIERE='OUI': a link held closed (bilateral) once in contact.
+  bool heldClosed(std::size_t k) const;
+  void storeFriction(Field& out, std::size_t c0) const;
   // The friction loop of POINT_FIXE and the RESI_FROT test: false while the threshold moves.
   bool acceptFriction(const Eigen::VectorXd& u);
   void resetFrictionStep();
@@ -123,10 +144,14 @@ private:
   std::vector<int> changes_; // per link: status changes in the step
   std::vector<int> frozen_;  // per link: -1, or the status frozen by CYCLAGE
   std::string continuation_;
-  std::vector<double> lagsF_;         // per link: tangential pressure lambda_t
-  std::vector<double> lagsFStart_;    // per link, at the start of the step
-  std::vector<double> threshold_;     // per link: frozen threshold pressure (POINT_FIXE)
-  std::vector<double> lastThreshold_; // per link: |LAGS_C| at the previous correction (RESI_FROT)
+  std::vector<Eigen::Vector2d> lagsF_;      // per link: tangential pressure along the friction directions
+  std::vector<Eigen::Vector2d> lagsFStart_; // per link, at the start of the step
+  std::array<SparseRows, 2> frictionRows_;  // per row: the friction directions
+  std::vector<Eigen::Matrix2d> basis_; // per row: friction direction j = basis(j, :) (tangent1, tangent2)
+  std::vector<int> directions_;        // per row: number of friction directions
+  std::vector<char> closed_;           // per link: held closed (GLISSIERE='OUI')
+  std::vector<double> threshold_;      // per link: frozen threshold pressure (POINT_FIXE)
+  std::vector<double> lastThreshold_;  // per link: |LAGS_C| at the previous correction (RESI_FROT)
   int frictionIterations_ = 0;
 };
 

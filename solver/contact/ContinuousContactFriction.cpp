@@ -1,5 +1,8 @@
-// Coulomb friction of the continuous formulation (FROTTEMENT='COULOMB', D_PLAN and C_PLAN): the
-// friction status, forces and loops of ContinuousContactConstraint (see its header).
+// Coulomb friction of the continuous formulation (FROTTEMENT='COULOMB', D_PLAN, C_PLAN, AXIS and 3D):
+// the friction status, forces and loops of ContinuousContactConstraint (see its header). The
+// friction directions of a row are the pairing's tangents (one in 2D and AXIS, two in 3D) or what
+// SANS_GROUP_NO_FR / DIRE_EXCL_FROT leave of them (ContinuousFrictionOptions.cpp); the Coulomb
+// cone is a disc: the indicator q (a vector of the tangent plane) against the threshold.
 
 #include "solver/contact/ContinuousContactConstraint.hpp"
 
@@ -17,12 +20,6 @@ double frictionCoefficient(const ContinuousZone& z) {
 
 } // namespace
 
-double ContinuousContactConstraint::trialBase(std::size_t k, const ContinuousZone& z) const {
-  // STANDARD: the multiplier; PENALISATION: the tangential pressure at the start of the step (the
-  // elastic predictor of the penalised stick: the spring keeps the force of the previous steps)
-  return z.frictionPenalised ? (k < lagsFStart_.size() ? lagsFStart_[k] : 0.0) : lagsF_[k];
-}
-
 const ContinuousZone& ContinuousContactConstraint::zoneOfRow(Eigen::Index row) const {
   const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(row)]);
   return definition_->zones[static_cast<std::size_t>(links_[k].zone)].continuous;
@@ -33,9 +30,23 @@ double ContinuousContactConstraint::coulombOfRow(Eigen::Index row) const {
   return definition_->zones[static_cast<std::size_t>(links_[k].zone)].coulomb;
 }
 
-Eigen::VectorXd ContinuousContactConstraint::slipsAt(const Eigen::VectorXd& u) const {
+int ContinuousContactConstraint::frictionDirections(Eigen::Index row) const {
+  return friction() && static_cast<std::size_t>(row) < directions_.size()
+             ? directions_[static_cast<std::size_t>(row)]
+             : 0;
+}
+
+Eigen::MatrixXd ContinuousContactConstraint::slipsAt(const Eigen::VectorXd& u) const {
   // the relative tangential displacement of the slave node on the master since the step's start
-  return rows_.friction.T1 * (u - uStart_);
+  const auto m = static_cast<Eigen::Index>(rows_.link.size());
+  Eigen::MatrixXd s = Eigen::MatrixXd::Zero(m, 2);
+  const Eigen::VectorXd du = u - uStart_;
+  for (int j = 0; j < 2; ++j) {
+    if (frictionRow(j).rows() == m && m > 0) {
+      s.col(j) = frictionRow(j) * du;
+    }
+  }
+  return s;
 }
 
 double ContinuousContactConstraint::thresholdPressure(std::size_t k) const {
@@ -45,55 +56,128 @@ double ContinuousContactConstraint::thresholdPressure(std::size_t k) const {
   return std::max(0.0, -lagsC_[k]);
 }
 
-char ContinuousContactConstraint::frictionStatus(Eigen::Index row, double slip) const {
+Eigen::Vector2d ContinuousContactConstraint::indicator(Eigen::Index row, const Eigen::Vector2d& slip) const {
   const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(row)]);
   const ContinuousZone& z = zoneOfRow(row);
-  const double q = trialBase(k, z) + frictionCoefficient(z) * slip;
+  // STANDARD: the multiplier; PENALISATION: the tangential pressure at the start of the step (the
+  // elastic predictor of the penalised stick: the spring keeps the force of the previous steps)
+  const Eigen::Vector2d base = z.frictionPenalised ? lagsFStart_[k] : lagsF_[k];
+  Eigen::Vector2d q = base + frictionCoefficient(z) * slip;
+  for (int j = frictionDirections(row); j < 2; ++j) {
+    q(j) = 0.0; // no friction along an excluded direction
+  }
+  return q;
+}
+
+char ContinuousContactConstraint::frictionStatus(Eigen::Index row, const Eigen::Vector2d& slip) const {
+  const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(row)]);
+  if (frictionDirections(row) == 0) {
+    return 2; // friction excluded on every direction (SANS_GROUP_NO_FR): slides freely
+  }
   const double limit = coulombOfRow(row) * thresholdPressure(k);
-  if (std::fabs(q) < limit) {
-    return 1;
-  }
-  // a zero threshold (no pressure yet) slides with no force, whatever the direction: a status
-  // from the sign of a round-off slip would flip-flop
-  return q >= 0.0 || limit <= 0.0 ? 2 : 3;
+  // a zero threshold (no pressure yet) slides with no force
+  return indicator(row, slip).norm() < limit ? 1 : 2;
 }
 
-double ContinuousContactConstraint::tangentialPressure(Eigen::Index row, char s, double slip) const {
+Eigen::Vector2d ContinuousContactConstraint::tangentialPressure(Eigen::Index row, char s,
+                                                                const Eigen::Vector2d& slip) const {
+  const Eigen::Vector2d q = indicator(row, slip);
+  if (s == 1) {
+    return q;
+  }
+  const double size = q.norm();
+  if (s != 2 || size <= 0.0) {
+    return Eigen::Vector2d::Zero();
+  }
   const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(row)]);
-  const ContinuousZone& z = zoneOfRow(row);
-  switch (s) {
-  case 1:
-    return trialBase(k, z) + frictionCoefficient(z) * slip;
-  case 2:
-    return coulombOfRow(row) * thresholdPressure(k);
-  case 3:
-    return -coulombOfRow(row) * thresholdPressure(k);
-  default:
-    return 0.0;
-  }
+  return (coulombOfRow(row) * thresholdPressure(k) / size) * q; // on the disc, along q
 }
 
-void ContinuousContactConstraint::addFrictionForces(Eigen::Index row, char s, double slip,
+void ContinuousContactConstraint::addFrictionForces(Eigen::Index row, char s, const Eigen::Vector2d& slip,
                                                     Eigen::VectorXd& forces,
                                                     std::vector<Eigen::Triplet<double>>* tangent) const {
-  const SparseRows& t1 = rows_.friction.T1;
+  const int d = frictionDirections(row);
   const double w = weight_(row);
   if (s != 0) {
-    const double p = tangentialPressure(row, s, slip);
-    for (SparseRows::InnerIterator it(t1, row); it; ++it) {
-      forces(it.col()) -= w * p * it.value();
-    }
-  }
-  if (tangent != nullptr) {
-    // sticking: rho_t w T1^T T1; sliding: the force does not depend on u (its dependence on
-    // LAGS_C goes in the Schur complement); zeros keep the pattern
-    const double c = s == 1 ? frictionCoefficient(zoneOfRow(row)) * w : 0.0;
-    for (SparseRows::InnerIterator p(t1, row); p; ++p) {
-      for (SparseRows::InnerIterator q(t1, row); q; ++q) {
-        tangent->emplace_back(static_cast<int>(p.col()), static_cast<int>(q.col()),
-                              c * p.value() * q.value());
+    const Eigen::Vector2d p = tangentialPressure(row, s, slip);
+    for (int j = 0; j < d; ++j) {
+      for (SparseRows::InnerIterator it(frictionRow(j), row); it; ++it) {
+        forces(it.col()) -= w * p(j) * it.value();
       }
     }
+  }
+  if (tangent == nullptr) {
+    return;
+  }
+  // sticking: rho_t w T^T T; sliding: w mu |lambda_n| rho_t / |q| T^T (I - q q^T / |q|^2) T, the
+  // turn of the direction (zero in 2D); its dependence on LAGS_C goes in the Schur complement;
+  // zeros keep the pattern
+  const double rho = frictionCoefficient(zoneOfRow(row));
+  Eigen::Matrix2d c = Eigen::Matrix2d::Zero();
+  if (s == 1) {
+    c = rho * w * Eigen::Matrix2d::Identity();
+  } else if (s == 2 && d == 2) {
+    const Eigen::Vector2d q = indicator(row, slip);
+    const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(row)]);
+    const double limit = coulombOfRow(row) * thresholdPressure(k);
+    const double size = q.norm();
+    if (size > 0.0 && limit > 0.0) {
+      const Eigen::Vector2d e = q / size;
+      c = (w * limit * rho / size) * (Eigen::Matrix2d::Identity() - e * e.transpose());
+    }
+  }
+  for (int a = 0; a < d; ++a) {
+    for (int b = 0; b < d; ++b) {
+      for (SparseRows::InnerIterator p(frictionRow(a), row); p; ++p) {
+        for (SparseRows::InnerIterator q(frictionRow(b), row); q; ++q) {
+          tangent->emplace_back(static_cast<int>(p.col()), static_cast<int>(q.col()),
+                                c(a, b) * p.value() * q.value());
+        }
+      }
+    }
+  }
+}
+
+void ContinuousContactConstraint::updateSlidingPressures(const Eigen::VectorXd& u,
+                                                         const std::vector<char>& status) {
+  if (!friction()) {
+    return;
+  }
+  const Eigen::MatrixXd slip = slipsAt(u);
+  for (std::size_t i = 0; i < rows_.link.size(); ++i) {
+    const auto row = static_cast<Eigen::Index>(i);
+    const auto k = static_cast<std::size_t>(rows_.link[i]);
+    if (status[k] == 2 && !penalised(row)) {
+      // mu |lambda_n| q / |q| after the update, at the corrected displacement
+      lagsF_[k] = tangentialPressure(row, 2, slip.row(row).transpose());
+    }
+  }
+}
+
+void ContinuousContactConstraint::frictionState(Eigen::Index row, char s, const Eigen::Vector2d& slip,
+                                                LinkState& state) const {
+  const Eigen::Matrix2d& b = basis_[static_cast<std::size_t>(row)];
+  const Eigen::Vector2d p = tangentialPressure(row, s, slip);
+  const int d = frictionDirections(row);
+  Eigen::Vector2d slipT = Eigen::Vector2d::Zero();
+  Eigen::Vector2d forceT = Eigen::Vector2d::Zero();
+  for (int j = 0; j < d; ++j) { // from the friction directions to the pairing's tangents
+    slipT += slip(j) * b.row(j).transpose();
+    forceT -= weight_(row) * p(j) * b.row(j).transpose();
+  }
+  state.slip = {slipT(0), slipT(1)};
+  state.friction = {forceT(0), forceT(1)};
+  state.status = s == 1 ? LinkStatus::Sticking : LinkStatus::Sliding;
+}
+
+void ContinuousContactConstraint::acceptFrictionState(Eigen::Index row, const LinkState& state) {
+  const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(row)]);
+  const double w = weight_(row);
+  const Eigen::Matrix2d& b = basis_[static_cast<std::size_t>(row)];
+  const Eigen::Vector2d f{state.friction[0], state.friction[1]};
+  lagsF_[k].setZero();
+  for (int j = 0; j < frictionDirections(row) && w > 0.0; ++j) {
+    lagsF_[k](j) = -b.row(j).dot(f) / w;
   }
 }
 

@@ -370,17 +370,43 @@ TEST(ContinuousFriction, WhatIsNotDoneIsRefusedNamingTheKeyword) {
     std::string expected;
   };
   for (const Case& c : std::vector<Case>{
-           {"CONTACT_INIT='OUI', ", "CONTACT_INIT='OUI', SEUIL_INIT=-10.0, ", "SEUIL_INIT"},
            {"CONTACT_INIT='OUI', ", "CONTACT_INIT='OUI', GRAND_GLIS='OUI', ", "GRAND_GLIS='OUI'"},
            {"CONTACT_INIT='OUI', ", "CONTACT_INIT='OUI', ALGO_CONT='PENALISATION', COEF_PENA_CONT=1e6, ",
             "ALGO_CONT='PENALISATION'"},
-           {"MODELISATION='D_PLAN'", "MODELISATION='AXIS'", "AXIS"},
        }) {
     const StudyRun r = runStudy("refused", mesh, replace(comm, c.from, c.to), true);
     EXPECT_FALSE(passed(r)) << c.to;
     EXPECT_NE(r.message.find("CONTACT_20"), std::string::npos) << r.message;
     EXPECT_NE(r.message.find(c.expected), std::string::npos) << r.message;
     EXPECT_NE(r.message.find("not implemented yet"), std::string::npos) << r.message;
+  }
+}
+
+// SANS_GROUP_NO_FR naming no node group, and DIRE_EXCL_FROT normal to the contact surface (it would
+// exclude no direction), are refused at their keyword, naming the group or the slave node.
+TEST(ContinuousFriction, BadFrictionExclusionIsRefusedWhereItIsWritten) {
+  const Mesh mesh = blockOnPlane();
+  Shear s;
+  const std::string comm = s.comm(mesh, {0.0, 1.0});
+  const std::string at = "SANS_GROUP_NO='COIN', ";
+  ASSERT_NE(comm.find(at), std::string::npos);
+  const struct {
+    std::string added;
+    std::string id;
+    std::string said;
+  } cases[] = {
+      {"SANS_GROUP_NO_FR='NOPE', ", "CONTACT_1", "SANS_GROUP_NO_FR: the mesh has no node group 'NOPE'"},
+      {"SANS_GROUP_NO_FR='B_YMIN', DIRE_EXCL_FROT=(0.0, 1.0, 0.0), ", "CONTACT_30",
+       "DIRE_EXCL_FROT (0, 1, 0) is normal to the contact surface at slave node"},
+  };
+  for (const auto& c : cases) {
+    std::string text = comm;
+    text.insert(text.find(at) + at.size(), c.added);
+    const StudyRun r = runStudy("bad_exclusion", mesh, text, true);
+    EXPECT_FALSE(passed(r)) << c.added;
+    EXPECT_NE(r.message.find(c.id), std::string::npos) << r.message;
+    EXPECT_NE(r.message.find(c.said), std::string::npos) << r.message;
+    EXPECT_NE(r.message.find(".comm:"), std::string::npos) << r.message; // located
   }
 }
 
