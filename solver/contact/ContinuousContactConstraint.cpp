@@ -276,6 +276,10 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
     return;
   }
   lastStatus_ = status;
+  if (!friction() && definition_->settings.continuous.statusLoop == StatusLoop::Newton) {
+    correctWithLinearisedStatus(u, status, ddu, dlambda, solver);
+    return;
+  }
   recordThreshold();
   // The multipliers solving the Schur complement: the normal ones of the augmented-Lagrangian rows
   // in contact and (ALGO_FROT='STANDARD') the tangential ones of the sticking rows. Each has its

@@ -86,6 +86,10 @@ private:
   const std::vector<char>& currentStatus(const Eigen::VectorXd& u);
   void computeWeights();
   [[noreturn]] void redundant(Eigen::Index row) const; // CONTACT_11 naming the row's slave node
+  // Frictionless ALGO_RESO_CONT='NEWTON': the correction of the status of the linearised problem,
+  // solved exactly from the assembled status (ContinuousLinearisedStatus.cpp).
+  void correctWithLinearisedStatus(const Eigen::VectorXd& u, const std::vector<char>& assembled,
+                                   Eigen::VectorXd& ddu, Eigen::VectorXd& dlambda, SaddleSolver& solver);
   // Friction (ContinuousContactFriction.cpp). Status codes per link: 0 open, 1 contact (and
   // sticking with friction), 2 sliding with sign(q) > 0, 3 sliding with sign(q) < 0.
   bool friction() const { return definition_->hasFriction(); }
