@@ -90,7 +90,11 @@ ContinuousZone readContinuousZone(const KeywordTree& z) {
   refuseUnless(z, "GLISSIERE", "NON", c.refused);
   refusePresent(z, "DIST_MAIT", c.refused);
   refusePresent(z, "DIST_ESCL", c.refused);
-  refusePresent(z, "PENE_MAXI", c.refused);
+  if (z.has("PENE_MAXI")) { // ADAPTATION='ADAPT_COEF' or 'TOUT' with ALGO_CONT='PENALISATION'
+    c.maxPenetration = z.real("PENE_MAXI");
+    c.maxPenetrationAt = z.locationOf("PENE_MAXI");
+  }
+  refusePresent(z, "GLIS_MAXI", c.refused);
   refusePresent(z, "SEUIL_INIT", c.refused);
   refusePresent(z, "SANS_GROUP_NO_FR", c.refused);
   if (z.has("TOLE_INTERP") && z.real("TOLE_INTERP") != 0.0) {

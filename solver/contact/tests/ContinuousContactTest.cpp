@@ -245,7 +245,8 @@ TEST(ContinuousContact, WhatIsNotImplementedIsRefusedNamingTheKeyword) {
   } cases[] = {
       {", FROTTEMENT='COULOMB'", ", COULOMB=0.2, SEUIL_INIT=1.0", "SEUIL_INIT"},
       {"", ", INTEGRATION='GAUSS'", "INTEGRATION='GAUSS'"},
-      {"", ", ADAPTATION='ADAPT_COEF'", "ADAPTATION='ADAPT_COEF'"},
+      {", FROTTEMENT='COULOMB'",
+       ", COULOMB=0.2, ALGO_FROT='PENALISATION', ADAPTATION='ADAPT_COEF', GLIS_MAXI=0.1", "GLIS_MAXI"},
       {", ALGO_RESO_GEOM='NEWTON'", "", "ALGO_RESO_GEOM='NEWTON'"},
       {"", ", RESOLUTION='NON', TOLE_INTERP=0.1", "TOLE_INTERP (other than its default 0)"},
       {"", ", GLISSIERE='OUI'", "GLISSIERE='OUI'"},
