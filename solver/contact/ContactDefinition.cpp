@@ -93,7 +93,11 @@ ContinuousZone readContinuousZone(const KeywordTree& z) {
   refuseUnless(z, "DIST_COQUE", "NON", c.refused);
   refusePresent(z, "DIST_MAIT", c.refused);
   refusePresent(z, "DIST_ESCL", c.refused);
-  refusePresent(z, "PENE_MAXI", c.refused);
+  if (z.has("PENE_MAXI")) { // ADAPTATION='ADAPT_COEF' or 'TOUT' with ALGO_CONT='PENALISATION'
+    c.maxPenetration = z.real("PENE_MAXI");
+    c.maxPenetrationAt = z.locationOf("PENE_MAXI");
+  }
+  refusePresent(z, "GLIS_MAXI", c.refused);
   if (z.has("SEUIL_INIT")) { // FROTTEMENT='COULOMB'
     c.initialThreshold = z.real("SEUIL_INIT");
   }

@@ -49,6 +49,9 @@ struct ContinuousZone {
   double initDistance = -1.0;                      // DIST_MAXI (< 0: no limit)
   std::string adaptation = "CYCLAGE";              // ADAPTATION
   SourceLocation adaptationAt;
+  std::optional<double> maxPenetration; // PENE_MAXI (ADAPT_COEF/TOUT; default: ContinuousAdaptation)
+  SourceLocation maxPenetrationAt;
+  double stiffness = 0.0; // ADAPT_COEF/TOUT: E*/h, the scale of the coefficients (ContinuousAdaptation)
   bool frictionPenalised = false;                  // ALGO_FROT='PENALISATION' (else STANDARD)
   double frictionAugmentation = 100.0;             // COEF_FROT (ALGO_FROT='STANDARD')
   double frictionPenalty = 0.0;                    // COEF_PENA_FROT (ALGO_FROT='PENALISATION')

@@ -5,6 +5,7 @@
 
 #include "catalog/KeywordTree.hpp"
 #include "interpreter/Diagnostics.hpp"
+#include "solver/contact/ContinuousAdaptation.hpp"
 #include "solver/contact/ContinuousContactConstraint.hpp"
 #include "solver/contact/DualContactConstraint.hpp"
 #include "solver/contact/PenaltyContactConstraint.hpp"
@@ -150,19 +151,21 @@ std::unique_ptr<contact::ContactConstraint> makeContinuous(std::shared_ptr<const
                      z.location,
                      "use ALGO_CONT='STANDARD' (COEF_CONT) with ALGO_FROT='STANDARD' or 'PENALISATION'");
     }
-    if (z.continuous.adaptation != "NON" && z.continuous.adaptation != "CYCLAGE") {
-      notImplemented(fmt::format("ADAPTATION='{}' with FORMULATION='CONTINUE'", z.continuous.adaptation),
-                     z.continuous.adaptationAt,
-                     "the automatic COEF_CONT/COEF_PENA_CONT is not implemented: use ADAPTATION='NON' or "
-                     "'CYCLAGE' and give COEF_CONT or COEF_PENA_CONT");
-    }
   }
-  if (policy) {
-    notImplemented("DEFI_LIST_INST EVENEMENT='INTERPENETRATION' with FORMULATION='CONTINUE'", at,
-                   "remove the INTERPENETRATION event");
+  if (policy && std::none_of(def->zones.begin(), def->zones.end(), [](const contact::ContactZone& z) {
+        return z.resolve && z.algorithm == ContactAlgorithm::ContinuePenalty;
+      })) {
+    notImplemented(
+        "DEFI_LIST_INST EVENEMENT='INTERPENETRATION' without a zone of ALGO_CONT='PENALISATION' (it "
+        "raises COEF_PENA_CONT; the augmented Lagrangian leaves no interpenetration)",
+        at, "use ALGO_CONT='PENALISATION', or remove the INTERPENETRATION event");
   }
-  return std::make_unique<contact::ContinuousContactConstraint>(std::move(def), system.dofs(),
-                                                                system.model().modelling);
+  def = contact::adaptContinuousCoefficients(std::move(def), system.materials(),
+                                             fem::spaceDimension(system.model().modelling));
+  auto c = std::make_unique<contact::ContinuousContactConstraint>(std::move(def), system.dofs(),
+                                                                  system.model().modelling);
+  c->setInterpenetrationPolicy(policy);
+  return c;
 }
 
 std::optional<FailurePolicy> interpenetrationPolicy(const KeywordTree& kw) {

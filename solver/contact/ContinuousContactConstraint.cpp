@@ -55,8 +55,9 @@ std::string ContinuousContactConstraint::resolutionEffects() const {
     }
   }
   const auto& c = definition_->settings.continuous;
-  return fmt::format("{} (LAGS_C on the slave nodes, INTEGRATION='AUTO'), ALGO_RESO_CONT={}",
-                     fmt::join(zones, "; "), c.statusLoop == StatusLoop::Newton ? "NEWTON" : "POINT_FIXE");
+  return fmt::format("{} (LAGS_C on the slave nodes, INTEGRATION='AUTO'), ALGO_RESO_CONT={}{}",
+                     fmt::join(zones, "; "), c.statusLoop == StatusLoop::Newton ? "NEWTON" : "POINT_FIXE",
+                     penetrationEffects());
 }
 
 void ContinuousContactConstraint::computeWeights() {
@@ -145,8 +146,9 @@ void ContinuousContactConstraint::paired() {
     const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(i)]);
     const ContactZone& z = definition_->zones[static_cast<std::size_t>(links_[k].zone)];
     weight_(i) = weightLink_[k];
-    coefficient_(i) =
-        z.algorithm == ContactAlgorithm::ContinuePenalty ? z.continuous.penalty : z.continuous.augmentation;
+    coefficient_(i) = z.algorithm == ContactAlgorithm::ContinuePenalty
+                          ? z.continuous.penalty * penaltyFactor(links_[k].zone)
+                          : z.continuous.augmentation;
   }
 }
 
@@ -278,6 +280,10 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
     return;
   }
   lastStatus_ = status;
+  if (!friction() && definition_->settings.continuous.statusLoop == StatusLoop::Newton) {
+    correctWithLinearisedStatus(u, status, ddu, dlambda, solver);
+    return;
+  }
   recordThreshold();
   // The multipliers solving the Schur complement: the normal ones of the augmented-Lagrangian rows
   // in contact and (ALGO_FROT='STANDARD') the tangential ones of the sticking rows. Each has its
@@ -430,7 +436,7 @@ bool ContinuousContactConstraint::acceptResolution(const Eigen::VectorXd& u) {
   const bool newton = c.statusLoop == StatusLoop::Newton;
   const std::vector<char>& used = newton ? lastStatus_ : status_;
   if (rows_.link.empty() || now == used || (newton && lastStatus_.empty() && now == status_)) {
-    return !friction() || acceptFriction(u);
+    return (!friction() || acceptFriction(u)) && acceptPenetration(u);
   }
   int changed = 0;
   int frozen = 0;

@@ -44,6 +44,9 @@
 
 #include "solver/contact/ContactConstraint.hpp"
 #include "solver/fem/Modelling.hpp"
+#include "solver/functions/InstantList.hpp"
+
+#include <optional>
 
 #include <array>
 
@@ -66,6 +69,10 @@ public:
   // The convergence-table note: nodes in contact, status changes since the last correction (the
   // criterion of the generalised Newton on the status), largest interpenetration.
   std::string iterationNote() const override;
+  // DEFI_LIST_INST ECHEC EVENEMENT='INTERPENETRATION' (ContinuousPenetration.cpp).
+  void setInterpenetrationPolicy(std::optional<FailurePolicy> policy) { policy_ = std::move(policy); }
+  // The factor on COEF_PENA_CONT of each zone (PENE_MAXI of ADAPT_COEF/TOUT, ADAPT_COEF_PENA).
+  const std::vector<double>& penaltyFactors() const { return penaltyFactor_; }
 
   // LAGS_C of each link (slave node) of the pairing: the contact pressure, negative in
   // compression; and its integration weight w.
@@ -89,6 +96,10 @@ private:
   const std::vector<char>& currentStatus(const Eigen::VectorXd& u);
   void computeWeights();
   [[noreturn]] void redundant(Eigen::Index row) const; // CONTACT_11 naming the row's slave node
+  // Frictionless ALGO_RESO_CONT='NEWTON': the correction of the status of the linearised problem,
+  // solved exactly from the assembled status (ContinuousLinearisedStatus.cpp).
+  void correctWithLinearisedStatus(const Eigen::VectorXd& u, const std::vector<char>& assembled,
+                                   Eigen::VectorXd& ddu, Eigen::VectorXd& dlambda, SaddleSolver& solver);
   // Friction (ContinuousContactFriction.cpp). Status codes per link: 0 open, 1 contact (and
   // sticking with friction), 2 sliding (along the direction of the indicator q).
   bool friction() const { return definition_->hasFriction(); }
@@ -128,6 +139,11 @@ private:
   void resetFrictionStep();
   void recordThreshold(); // |LAGS_C| before a correction (the RESI_FROT test of NEWTON)
   bool withFrictionRows() const override { return definition_->hasFriction(); }
+  // The interpenetration of the penalised zones against PENE_MAXI (ADAPT_COEF/TOUT) and the
+  // INTERPENETRATION event: false when a penalty was raised (ContinuousPenetration.cpp).
+  bool acceptPenetration(const Eigen::VectorXd& u);
+  double penaltyFactor(int zone) const;
+  std::string penetrationEffects() const;
 
   fem::Modelling modelling_;
   Eigen::VectorXd weight_;         // per row
@@ -153,6 +169,8 @@ private:
   std::vector<double> threshold_;      // per link: frozen threshold pressure (POINT_FIXE)
   std::vector<double> lastThreshold_;  // per link: |LAGS_C| at the previous correction (RESI_FROT)
   int frictionIterations_ = 0;
+  std::optional<FailurePolicy> policy_; // INTERPENETRATION event
+  std::vector<double> penaltyFactor_;   // per zone: the raises of COEF_PENA_CONT
 };
 
 } // namespace stella::contact

@@ -30,6 +30,7 @@ public:
 
   const Model& model() const { return *model_; }
   const DofMap& dofs() const { return dofs_; }
+  const MaterialField& materials() const { return *materials_; }
   const CellBehaviours& behaviours() const { return behaviours_; }
   const VolumeAssembler& assembler() const { return assembler_; }
   const ElementCharacteristics* characteristics() const { return cara_.get(); }

@@ -244,7 +244,8 @@ TEST(ContinuousContact, WhatIsNotImplementedIsRefusedNamingTheKeyword) {
     std::string named;
   } cases[] = {
       {"", ", INTEGRATION='GAUSS'", "INTEGRATION='GAUSS'"},
-      {"", ", ADAPTATION='ADAPT_COEF'", "ADAPTATION='ADAPT_COEF'"},
+      {", FROTTEMENT='COULOMB'",
+       ", COULOMB=0.2, ALGO_FROT='PENALISATION', ADAPTATION='ADAPT_COEF', GLIS_MAXI=0.1", "GLIS_MAXI"},
       {", ALGO_RESO_GEOM='NEWTON'", "", "ALGO_RESO_GEOM='NEWTON'"},
       {"", ", RESOLUTION='NON', TOLE_INTERP=0.1", "TOLE_INTERP (other than its default 0)"},
   };

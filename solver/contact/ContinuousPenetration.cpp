@@ -1,0 +1,129 @@
+// The interpenetration control of the penalised continuous contact (ALGO_CONT='PENALISATION'):
+// PENE_MAXI of ADAPTATION='ADAPT_COEF'/'TOUT' (notice §4.12: the penalty is raised while the
+// interpenetration exceeds it; default 1e-2 x the shortest edge of the zone, ContinuousAdaptation)
+// and DEFI_LIST_INST ECHEC EVENEMENT='INTERPENETRATION' (ACTION='ADAPT_COEF_PENA': COEF_PENA_CONT
+// raised, at most COEF_MAXI; 'ARRET': the analysis stops). Both act once Newton has converged: the
+// penalty of the zone is multiplied by 10, as the discrete formulation does with E_N, and the
+// Newton iterations go on with it; the factor is kept for the next steps.
+
+#include "solver/contact/ContinuousAdaptation.hpp"
+#include "solver/contact/ContinuousContactConstraint.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+namespace stella::contact {
+
+namespace {
+
+constexpr double raise = 10.0;
+
+} // namespace
+
+double ContinuousContactConstraint::penaltyFactor(int zone) const {
+  const auto z = static_cast<std::size_t>(zone);
+  return z < penaltyFactor_.size() ? penaltyFactor_[z] : 1.0;
+}
+
+std::string ContinuousContactConstraint::penetrationEffects() const {
+  std::string s;
+  for (std::size_t z = 0; z < definition_->zones.size(); ++z) {
+    const ContactZone& zone = definition_->zones[z];
+    if (zone.resolve && adaptsCoefficients(zone.continuous)) {
+      s += fmt::format(", zone {}: ADAPTATION='{}' coefficients x E*/h = {:.6g}", z + 1,
+                       zone.continuous.adaptation, zone.continuous.stiffness);
+      if (zone.algorithm == ContactAlgorithm::ContinuePenalty && zone.continuous.maxPenetration) {
+        s += fmt::format(", penalty raised above PENE_MAXI = {:.6g}", *zone.continuous.maxPenetration);
+      }
+    }
+  }
+  if (policy_) {
+    s += policy_->action == FailurePolicy::Action::AdaptPenalty
+             ? fmt::format(", COEF_PENA_CONT adapted above PENE_MAXI={} (COEF_MAXI={})",
+                           policy_->maxPenetration, policy_->maxCoefficient)
+             : fmt::format(", stop above PENE_MAXI={}", policy_->maxPenetration);
+  }
+  return s;
+}
+
+bool ContinuousContactConstraint::acceptPenetration(const Eigen::VectorXd& u) {
+  const auto& zones = definition_->zones;
+  penaltyFactor_.resize(zones.size(), 1.0);
+  const Eigen::Index m = rows_.problem.A.rows();
+  if (m == 0) {
+    return true;
+  }
+  // the largest interpenetration of the penalised nodes of each zone (a node of zero weight
+  // carries no force)
+  const Eigen::VectorXd g = gapsAt(u);
+  std::vector<double> penetration(zones.size(), 0.0);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(i)]);
+    if (penalised(i) && weight_(i) > 0.0) {
+      auto& p = penetration[static_cast<std::size_t>(links_[k].zone)];
+      p = std::max(p, -g(i));
+    }
+  }
+  std::vector<std::string> raised;
+  for (std::size_t z = 0; z < zones.size(); ++z) {
+    const ContactZone& zone = zones[z];
+    if (!zone.resolve || zone.algorithm != ContactAlgorithm::ContinuePenalty) {
+      continue;
+    }
+    const double pene = penetration[z];
+    const double penalty = zone.continuous.penalty * penaltyFactor_[z];
+    bool raise10 = adaptsCoefficients(zone.continuous) && zone.continuous.maxPenetration &&
+                   pene > *zone.continuous.maxPenetration;
+    double limit = std::numeric_limits<double>::infinity();
+    if (policy_ && pene > policy_->maxPenetration) {
+      if (policy_->action == FailurePolicy::Action::Stop) {
+        throw UserError(
+            Diagnostic::noConvergence(
+                "CONTACT_14",
+                fmt::format("interpenetration {:.3e} above PENE_MAXI = {} at INST {} in zone {} "
+                            "(DEFI_LIST_INST ECHEC EVENEMENT='INTERPENETRATION', ACTION='ARRET')",
+                            pene, policy_->maxPenetration, time_, z + 1),
+                definition_->location)
+                .withNote("raise COEF_PENA_CONT, or use ACTION='ADAPT_COEF_PENA' to let it be raised "
+                          "automatically"));
+      }
+      raise10 = true;
+      limit = policy_->maxCoefficient;
+    }
+    if (!raise10) {
+      continue;
+    }
+    const double next = std::min(raise * penalty, std::max(penalty, limit));
+    if (next <= penalty) {
+      noteAlarm(fmt::format("CONTACT_15: interpenetration {:.3e} above PENE_MAXI = {} in zone {} but "
+                            "COEF_PENA_CONT is already at COEF_MAXI = {}: the step is accepted",
+                            pene, policy_->maxPenetration, z + 1, policy_->maxCoefficient));
+      continue;
+    }
+    penaltyFactor_[z] = next / zone.continuous.penalty;
+    raised.push_back(fmt::format("zone {}: interpenetration {:.3e}, COEF_PENA_CONT {:.6g} -> {:.6g}", z + 1,
+                                 pene, penalty, next));
+  }
+  if (raised.empty()) {
+    return true;
+  }
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(i)]);
+    if (penalised(i)) {
+      const ContactZone& zone = zones[static_cast<std::size_t>(links_[k].zone)];
+      coefficient_(i) = zone.continuous.penalty * penaltyFactor(links_[k].zone);
+    }
+  }
+  const std::string what = fmt::format("{}", fmt::join(raised, "; "));
+  if (policy_) {
+    noteAlarm(fmt::format("CONTACT_16: interpenetration above PENE_MAXI = {} at INST {} (EVENEMENT="
+                          "'INTERPENETRATION', ADAPT_COEF_PENA): {}; Newton iterations go on",
+                          policy_->maxPenetration, time_, what));
+  }
+  continuation_ = fmt::format("penalty raised ({}): Newton iterations go on", what);
+  return false;
+}
+
+} // namespace stella::contact
