@@ -8,6 +8,7 @@
 
 #include "interpreter/Diagnostics.hpp"
 #include "interpreter/Value.hpp"
+#include "solver/contact/ContinuousIntegrationRule.hpp"
 #include "solver/mesh/Mesh.hpp"
 
 #include <array>
@@ -49,10 +50,13 @@ struct ContinuousZone {
   double initDistance = -1.0;                      // DIST_MAXI (< 0: no limit)
   std::string adaptation = "CYCLAGE";              // ADAPTATION
   SourceLocation adaptationAt;
-  bool frictionPenalised = false;      // ALGO_FROT='PENALISATION' (else STANDARD)
-  double frictionAugmentation = 100.0; // COEF_FROT (ALGO_FROT='STANDARD')
-  double frictionPenalty = 0.0;        // COEF_PENA_FROT (ALGO_FROT='PENALISATION')
-  std::vector<Unimplemented> refused;  // INTEGRATION other than AUTO, DIST_*, GLISSIERE...
+  bool frictionPenalised = false;                            // ALGO_FROT='PENALISATION' (else STANDARD)
+  double frictionAugmentation = 100.0;                       // COEF_FROT (ALGO_FROT='STANDARD')
+  double frictionPenalty = 0.0;                              // COEF_PENA_FROT (ALGO_FROT='PENALISATION')
+  ContactIntegration integration = ContactIntegration::Auto; // INTEGRATION
+  int integrationOrder = 0;                                  // ORDRE_INT (0 with AUTO)
+  SourceLocation integrationAt;
+  std::vector<Unimplemented> refused; // DIST_*, GLISSIERE...
 };
 
 // One ZONE occurrence.

@@ -244,7 +244,6 @@ TEST(ContinuousContact, WhatIsNotImplementedIsRefusedNamingTheKeyword) {
     std::string named;
   } cases[] = {
       {", FROTTEMENT='COULOMB'", ", COULOMB=0.2, SEUIL_INIT=1.0", "SEUIL_INIT"},
-      {"", ", INTEGRATION='GAUSS'", "INTEGRATION='GAUSS'"},
       {"", ", ADAPTATION='ADAPT_COEF'", "ADAPTATION='ADAPT_COEF'"},
       {", ALGO_RESO_GEOM='NEWTON'", "", "ALGO_RESO_GEOM='NEWTON'"},
       {"", ", RESOLUTION='NON', TOLE_INTERP=0.1", "TOLE_INTERP (other than its default 0)"},

@@ -202,34 +202,116 @@ TEST(ContinuousIntegrationRule, RefusesOrdersOutsideTheCatalogueRangeAndOtherCel
   EXPECT_THROW(contactIntegrationRule(CellType::HEXA8, ContactIntegration::Auto, 0), std::invalid_argument);
 }
 
-// HEXA20 and TETRA10 blocks: their QUAD8 and TRIA6 slave cells have AUTO points off the nodes,
-// refused at the zone with CONTACT_20 naming the cell type (a run, not a crash or a silent nodal
-// integration with zero or negative vertex weights).
-TEST(ContinuousIntegrationRule, AutoOnQuad8AndTria6SlaveCellsIsRefused) {
-  for (const CellType cell : {CellType::HEXA20, CellType::TETRA10}) {
-    const std::string comm =
-        "DEBUT()\n"
-        "MA = LIRE_MAILLAGE(FORMAT='ASTER', UNITE=20)\n"
-        "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='3D'))\n"
-        "MAT = DEFI_MATERIAU(ELAS=_F(E=1000.0, NU=0.3))\n"
-        "CM = AFFE_MATERIAU(MAILLAGE=MA, AFFE=_F(TOUT='OUI', MATER=MAT))\n"
-        "BC = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=(_F(GROUP_MA=('A_XMIN', 'B_XMIN'), DX=0.0), "
-        "_F(GROUP_MA=('A_YMIN', 'B_YMIN'), DY=0.0), _F(GROUP_MA='A_ZMIN', DZ=0.0), "
-        "_F(GROUP_MA='B_ZMAX', DZ=-0.01)))\n"
-        "L = DEFI_LIST_REEL(VALE=(0.0, 1.0))\n"
-        "CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ZONE=_F(GROUP_MA_MAIT='A_ZMAX', "
-        "GROUP_MA_ESCL='B_ZMIN'))\n"
-        "RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, CONTACT=CONT, EXCIT=_F(CHARGE=BC), "
-        "INCREMENT=_F(LIST_INST=L))\n"
-        "FIN()\n";
-    const StudyRun r = runStudyIn("stella_contact_integration", fmt::format("refused_{}", name(cell)),
-                                  testing::twoBlocks(cell, 1, 1, 0.0), comm, true);
-    const std::string face = cell == CellType::HEXA20 ? "QUAD8" : "TRIA6";
-    EXPECT_FALSE(passed(r)) << face;
-    EXPECT_NE(r.message.find("CONTACT_20"), std::string::npos) << r.message;
-    EXPECT_NE(r.message.find("INTEGRATION='AUTO' on " + face + " slave cells"), std::string::npos)
-        << r.message;
-    EXPECT_NE(r.message.find("not implemented yet"), std::string::npos) << r.message;
+// Two blocks [0,1]^d, B above A with a gap 0.002 closed by pushing B's top by 0.01 t; A held on its
+// bottom, symmetry planes at x = 0 (and y = 0): uniaxial compression sigma = E' (0.01 t - 0.002) / 2
+// once in contact (E' = E / (1 - nu^2) in plane strain, E in 3D), E = 1000, nu = 0.3. The
+// continuous formulation at the contact points of `zone` must give LAGS_C = -sigma on every slave
+// node (the interpolated pressure is uniform), sum RN = the support's reaction = sigma x area.
+std::string pointPatchComm(bool threeD, const std::string& zone, double precision) {
+  const std::string up = threeD ? "Z" : "Y";
+  const std::string d = threeD ? "DZ" : "DY";
+  const double modulus = threeD ? 1000.0 : 1000.0 / (1.0 - 0.09);
+  std::string tests;
+  for (double t : {0.3, 1.0}) {
+    const double sigma = modulus * (0.01 * t - 0.002) / 2.0;
+    tests += testResu(t, "DEPL", "LAGS_C", "B_" + up + "MIN", "MIN", -sigma, precision);
+    tests += testResu(t, "DEPL", "LAGS_C", "B_" + up + "MIN", "MAX", -sigma, precision);
+    // RN is a norm (|RN|): the signed normal component adds up (QUAD8 corners carry negative forces)
+    tests += testResu(t, "CONT_NOEU", "RN" + up, "B_" + up + "MIN", "SOMM", sigma, precision);
+    tests += testResu(t, "REAC_NODA", d, "A_" + up + "MIN", "SOMM", sigma, precision);
+  }
+  tests += testResu(0.1, "DEPL", "LAGS_C", "B_" + up + "MIN", "MIN", 0.0, 1e-12);
+  const std::string sym =
+      threeD ? "_F(GROUP_MA=('A_XMIN', 'B_XMIN'), DX=0.0), _F(GROUP_MA=('A_YMIN', 'B_YMIN'), "
+               "DY=0.0), _F(GROUP_MA='A_ZMIN', DZ=0.0)"
+             : "_F(GROUP_MA=('A_XMIN', 'B_XMIN'), DX=0.0), _F(GROUP_MA='A_YMIN', DY=0.0)";
+  return fmt::format(
+      "DEBUT()\n"
+      "MA = LIRE_MAILLAGE(FORMAT='ASTER', UNITE=20)\n"
+      "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='{}'))\n"
+      "MAT = DEFI_MATERIAU(ELAS=_F(E=1000.0, NU=0.3))\n"
+      "CM = AFFE_MATERIAU(MAILLAGE=MA, AFFE=_F(TOUT='OUI', MATER=MAT))\n"
+      "BC = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=({}))\n"
+      "PUSH = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='B_{}MAX', {}=-0.01))\n"
+      "F = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0))\n"
+      "L = DEFI_LIST_REEL(VALE=(0.0, 0.1, 0.3, 1.0))\n"
+      "CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE',\n"
+      "                    ZONE=_F(GROUP_MA_MAIT='A_{}MAX', GROUP_MA_ESCL='B_{}MIN'{}))\n"
+      "RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, CONTACT=CONT, EXCIT=(_F(CHARGE=BC), _F(CHARGE=PUSH, "
+      "FONC_MULT=F)), INCREMENT=_F(LIST_INST=L), CONVERGENCE=_F(RESI_GLOB_MAXI=1.0e-9), "
+      "SOLVEUR=_F(METHODE='MULT_FRONT'))\n"
+      "RESU = CALC_CHAMP(reuse=RESU, RESULTAT=RESU, FORCE=('FORC_NODA', 'REAC_NODA'))\n"
+      "{}"
+      "FIN()\n",
+      threeD ? "3D" : "D_PLAN", sym, up, d, up, up, zone, tests);
+}
+
+StudyRun runPatch(const std::string& name, CellType cell, int na, int nb, const std::string& zone,
+                  double precision) {
+  const bool threeD = info(cell).dimension == 3;
+  Mesh mesh = testing::twoBlocks(cell, na, nb, 0.002);
+  return runStudyIn("stella_contact_integration", name, mesh, pointPatchComm(threeD, zone, precision));
+}
+
+// Matching meshes: every scheme reproduces the uniform pressure to round-off (the slave and
+// master shape functions agree on the interface, so the point rows are exact).
+TEST(ContinuousIntegrationRule, PatchTestWithEverySchemeOnQuad4Blocks) {
+  for (const std::string zone :
+       {", INTEGRATION='GAUSS', ORDRE_INT=2", ", INTEGRATION='GAUSS'", ", INTEGRATION='GAUSS', ORDRE_INT=6",
+        ", INTEGRATION='SIMPSON'", ", INTEGRATION='SIMPSON', ORDRE_INT=4", ", INTEGRATION='NCOTES'",
+        ", INTEGRATION='NCOTES', ORDRE_INT=8"}) {
+    const StudyRun r = runPatch("patch_quad4", CellType::QUAD4, 4, 4, zone, 1e-8);
+    EXPECT_TRUE(passed(r)) << zone << "\n" << r.message;
+  }
+}
+
+TEST(ContinuousIntegrationRule, PatchTestAtPointsOnQuadraticAnd3DSlaveCells) {
+  const struct {
+    CellType cell;
+    std::string zone;
+  } cases[] = {
+      {CellType::QUAD8, ", INTEGRATION='GAUSS'"},               // SEG3 slave cells
+      {CellType::HEXA8, ", INTEGRATION='GAUSS'"},               // QUAD4
+      {CellType::HEXA20, ""},                                   // QUAD8, AUTO: 3 x 3 Simpson points
+      {CellType::HEXA20, ", INTEGRATION='GAUSS'"},              // QUAD8
+      {CellType::TETRA10, ""},                                  // TRIA6, AUTO: 6 Gauss points
+      {CellType::TETRA10, ", INTEGRATION='GAUSS', ORDRE_INT=5"} // TRIA6, 7 points per cell
+  };
+  for (const auto& c : cases) {
+    const StudyRun r = runPatch(fmt::format("patch_{}", name(c.cell)), c.cell, 2, 2, c.zone, 1e-8);
+    EXPECT_TRUE(passed(r)) << name(c.cell) << c.zone << "\n" << r.message;
+  }
+}
+
+// What the contact points do not implement yet is refused at the keyword (CONTACT_20).
+TEST(ContinuousIntegrationRule, WhatThePointsDoNotImplementIsRefused) {
+  const struct {
+    std::string global;
+    std::string zone;
+    std::string named;
+  } cases[] = {
+      {"", ", ALGO_CONT='PENALISATION', COEF_PENA_CONT=1.0e4, INTEGRATION='GAUSS'",
+       "ALGO_CONT='PENALISATION' with INTEGRATION other than 'AUTO' on linear cells"},
+      {" FROTTEMENT='COULOMB',", ", COULOMB=0.2, INTEGRATION='SIMPSON'",
+       "FROTTEMENT='COULOMB' with INTEGRATION other than 'AUTO' on linear cells"},
+      {"", ", NORMALE='ESCL', INTEGRATION='NCOTES'", "NORMALE other than 'MAIT'"},
+      {"", ", INTEGRATION='GAUSS', ORDRE_INT=1",
+       "gives 2 contact points on the slave cells of zone 1, fewer "
+       "than their 3 slave nodes"},
+  };
+  for (const auto& c : cases) {
+    std::string comm = pointPatchComm(false, c.zone, 1e-8);
+    const std::string formulation = "FORMULATION='CONTINUE',";
+    comm.replace(comm.find(formulation), formulation.size(), formulation + c.global);
+    const StudyRun r = runStudyIn("stella_contact_integration", "refused",
+                                  testing::twoBlocks(CellType::QUAD4, 2, 2, 0.002), comm, true);
+    EXPECT_FALSE(passed(r)) << c.named;
+    EXPECT_NE(r.message.find(c.named), std::string::npos) << r.message;
+    const bool illPosed = c.named.find("fewer") != std::string::npos;
+    EXPECT_NE(r.message.find(illPosed ? "CONTACT_INTEG_1" : "CONTACT_20"), std::string::npos) << r.message;
+    if (!illPosed) {
+      EXPECT_NE(r.message.find("not implemented yet"), std::string::npos) << r.message;
+    }
   }
 }
 
