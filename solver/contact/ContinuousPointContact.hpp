@@ -15,7 +15,9 @@
 // Their Newton matrix is symmetric: K + rho sum_C w A^T A (the tangent added here), the coupling
 // B = sum_C w_p N(p) A_p and the block -M, M = (1/rho) sum_{not C} w_p N N^T. correct() eliminates
 // lambda exactly: (B K^-1 B^T + M) dlambda = G + B ddu - M lambda (G_i = sum_C w N_i g_p), the
-// columns of K^-1 B^T through the driver's factorisation, then ddu -= K^-1 B^T dlambda. The status
+// columns of K^-1 B^T through the driver's factorisation, then ddu -= K^-1 B^T dlambda; the
+// multipliers of the nodes without a point in contact in their cells are 0 (as in the nodal
+// formulation: their block of M alone is singular for some rules). The status
 // loop (ALGO_RESO_CONT NEWTON or POINT_FIXE), CONTACT_INIT and ADAPTATION='CYCLAGE' act on the
 // points as the nodal formulation acts on the nodes. CONT_NOEU per slave node: RN the nodal contact
 // force sum_C w_p N_i(p) (-(lambda_p + rho g_p)), CONT 2 when a point of its cells with N_i != 0 is
