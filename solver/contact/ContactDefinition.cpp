@@ -88,7 +88,17 @@ ContinuousZone readContinuousZone(const KeywordTree& z) {
     c.lacCurrentJacobian = z.text("TYPE_JACOBIEN") == "ACTUALISE";
   }
   refuseUnless(z, "GRAND_GLIS", "NON", c.refused);
-  refuseUnless(z, "INTEGRATION", "AUTO", c.refused);
+  if (z.has("INTEGRATION")) { // not in a LAC zone
+    const std::string scheme = z.text("INTEGRATION");
+    c.integration = scheme == "GAUSS"     ? ContactIntegration::Gauss
+                    : scheme == "SIMPSON" ? ContactIntegration::Simpson
+                    : scheme == "NCOTES"  ? ContactIntegration::NewtonCotes
+                                          : ContactIntegration::Auto;
+    c.integrationAt = z.locationOf("INTEGRATION");
+    if (c.integration != ContactIntegration::Auto) { // the scheme's block
+      c.integrationOrder = static_cast<int>(z.integer("ORDRE_INT"));
+    }
+  }
   refuseUnless(z, "DIST_POUTRE", "NON", c.refused);
   refuseUnless(z, "DIST_COQUE", "NON", c.refused);
   refusePresent(z, "DIST_MAIT", c.refused);

@@ -8,6 +8,7 @@
 
 #include "interpreter/Diagnostics.hpp"
 #include "interpreter/Value.hpp"
+#include "solver/contact/ContinuousIntegrationRule.hpp"
 #include "solver/mesh/Mesh.hpp"
 
 #include <array>
@@ -60,9 +61,12 @@ struct ContinuousZone {
   SourceLocation frictionExcludedAt;
   std::optional<std::array<double, 3>> excludedDirection; // DIRE_EXCL_FROT
   SourceLocation excludedDirectionAt;
+  ContactIntegration integration = ContactIntegration::Auto; // INTEGRATION
+  int integrationOrder = 0;                                  // ORDRE_INT (0 with AUTO)
+  SourceLocation integrationAt;
   bool lacBruteForce = false;         // TYPE_APPA='ROBUSTE' (ALGO_CONT='LAC'; else RAPIDE)
   bool lacCurrentJacobian = false;    // TYPE_JACOBIEN='ACTUALISE' (ALGO_CONT='LAC'; else INITIAL)
-  std::vector<Unimplemented> refused; // INTEGRATION other than AUTO, DIST_*...
+  std::vector<Unimplemented> refused; // DIST_*...
 };
 
 // One ZONE occurrence.

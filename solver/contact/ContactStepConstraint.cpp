@@ -7,6 +7,7 @@
 #include "interpreter/Diagnostics.hpp"
 #include "solver/contact/ContinuousAdaptation.hpp"
 #include "solver/contact/ContinuousContactConstraint.hpp"
+#include "solver/contact/ContinuousPointContact.hpp"
 #include "solver/contact/DualContactConstraint.hpp"
 #include "solver/contact/PenaltyContactConstraint.hpp"
 #include "solver/contact/lac/LacContactConstraint.hpp"
@@ -135,6 +136,38 @@ std::unique_ptr<StepConstraint> makeLac(std::shared_ptr<const ContactDefinition>
   return std::make_unique<contact::lac::LacContactConstraint>(std::move(def), system.dofs(), modelling);
 }
 
+// INTEGRATION with contact points off the slave nodes (GAUSS, SIMPSON, NCOTES; AUTO on TRIA6/QUAD8):
+// STANDARD frictionless with the master's normal only.
+void refuseAtPoints(const ContactDefinition& def) {
+  const std::string note =
+      "contact points off the slave nodes (ContinuousPointContact) are implemented with "
+      "ALGO_CONT='STANDARD', FROTTEMENT='SANS', NORMALE='MAIT', VECT_MAIT=VECT_ESCL='AUTO' "
+      "and LISSAGE='NON'; use INTEGRATION='AUTO' on TRIA3, QUAD4, QUAD9 (SEG2, SEG3) slave "
+      "cells for the rest";
+  if (def.hasFriction()) {
+    notImplemented("FROTTEMENT='COULOMB' with INTEGRATION other than 'AUTO' on linear cells",
+                   def.settings.frictionAt, note);
+  }
+  if (def.settings.smoothing) {
+    notImplemented("LISSAGE='OUI' with INTEGRATION other than 'AUTO' on linear cells", def.location, note);
+  }
+  for (const auto& z : def.zones) {
+    const SourceLocation& at = z.continuous.integration != contact::ContactIntegration::Auto
+                                   ? z.continuous.integrationAt
+                                   : z.location;
+    if (z.algorithm == ContactAlgorithm::ContinuePenalty) {
+      notImplemented("ALGO_CONT='PENALISATION' with INTEGRATION other than 'AUTO' on linear cells", at, note);
+    }
+    if (z.normal != contact::NormalChoice::Master || z.masterVector != contact::VectorChoice::Auto ||
+        z.slaveVector != contact::VectorChoice::Auto) {
+      notImplemented(
+          "NORMALE other than 'MAIT' (or VECT_MAIT/VECT_ESCL) with INTEGRATION other than 'AUTO' on "
+          "linear cells",
+          at, note);
+    }
+  }
+}
+
 // FORMULATION='CONTINUE': what is not implemented yet is refused, naming the keyword.
 std::unique_ptr<contact::ContactConstraint> makeContinuous(std::shared_ptr<const ContactDefinition> def,
                                                            const MechanicalSystem& system,
@@ -162,6 +195,11 @@ std::unique_ptr<contact::ContactConstraint> makeContinuous(std::shared_ptr<const
   }
   def = contact::adaptContinuousCoefficients(std::move(def), system.materials(),
                                              fem::spaceDimension(system.model().modelling));
+  if (contact::needsContactPoints(*def)) {
+    refuseAtPoints(*def);
+    return std::make_unique<contact::ContinuousPointContactConstraint>(std::move(def), system.dofs(),
+                                                                       system.model().modelling);
+  }
   auto c = std::make_unique<contact::ContinuousContactConstraint>(std::move(def), system.dofs(),
                                                                   system.model().modelling);
   c->setInterpenetrationPolicy(policy);

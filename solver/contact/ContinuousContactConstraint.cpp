@@ -2,6 +2,7 @@
 // friction part is in ContinuousContactFriction.cpp.
 
 #include "solver/contact/ContinuousContactConstraint.hpp"
+#include "solver/contact/ContinuousIntegrationRule.hpp"
 
 #include "solver/database/Result.hpp"
 #include "solver/fem/Quadrature.hpp"
@@ -17,11 +18,12 @@ namespace stella::contact {
 
 namespace {
 
-// The slave cell types of INTEGRATION='AUTO': their shape functions have positive integrals
-// (those of the vertices of TRIA6 are zero, of QUAD8 negative).
+// The slave cell types whose INTEGRATION='AUTO' points are their nodes (code_aster's scheme,
+// ContinuousIntegrationRule): SEG2, SEG3, TRIA3, QUAD4, QUAD9; TRIA6 and QUAD8 have points that
+// are not nodes.
 bool nodeIntegrable(CellType type) {
-  return type == CellType::SEG2 || type == CellType::SEG3 || type == CellType::TRIA3 ||
-         type == CellType::QUAD4 || type == CellType::QUAD9;
+  return contactIntegrationDefined(type) &&
+         contactIntegrationRule(type, ContactIntegration::Auto, 0).atNodes();
 }
 
 // |J| of a skin cell at the reference point xi (length or area scale).
@@ -82,8 +84,12 @@ void ContinuousContactConstraint::computeWeights() {
                             name(type), mesh.cellName(c), zone.slaveGroup),
                 zone.location)
                 .withNote(
-                    "the shape functions of the vertices of TRIA6 and QUAD8 cells have zero or negative "
-                    "integrals; mesh the slave surface with TRIA3, QUAD4 or QUAD9 (SEG2 or SEG3 in 2D)"));
+                    "INTEGRATION='AUTO' integrates a TRIA6 at its 6 Gauss points of degree 4 and a QUAD8 at "
+                    "the 3 x 3 Simpson points (its centre is not a node): contact points that are not slave "
+                    "nodes, which the continuous formulation of stella does not have yet (one contact "
+                    "condition per slave node; the vertex shape functions of TRIA6 and QUAD8 have zero or "
+                    "negative integrals, so they cannot weigh nodal conditions); mesh the slave surface with "
+                    "TRIA3, QUAD4 or QUAD9 (SEG2 or SEG3 in 2D), as the notice advises for curved surfaces"));
       }
       const fem::ReferenceElement& ref = fem::referenceElement(type);
       const fem::QuadratureRule& rule = fem::rigiRule(type, fem::IntegrationRole::Skin);

@@ -243,7 +243,6 @@ TEST(ContinuousContact, WhatIsNotImplementedIsRefusedNamingTheKeyword) {
     std::string zone;
     std::string named;
   } cases[] = {
-      {"", ", INTEGRATION='GAUSS'", "INTEGRATION='GAUSS'"},
       {", FROTTEMENT='COULOMB'",
        ", COULOMB=0.2, ALGO_FROT='PENALISATION', ADAPTATION='ADAPT_COEF', GLIS_MAXI=0.1", "GLIS_MAXI"},
       {", ALGO_RESO_GEOM='NEWTON'", "", "ALGO_RESO_GEOM='NEWTON'"},

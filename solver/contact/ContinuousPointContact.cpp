@@ -1,0 +1,651 @@
+// Continuous contact at integration points (see the header).
+
+#include "solver/contact/ContinuousPointContact.hpp"
+
+#include "solver/contact/CellProjection.hpp"
+#include "solver/contact/ContinuousIntegrationRule.hpp"
+#include "solver/database/Result.hpp"
+#include "solver/fem/ReferenceElement.hpp"
+#include "solver/mesh/MeshGeometry.hpp"
+#include "solver/nonlinear/SaddleSolver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <set>
+
+namespace stella::contact {
+
+namespace {
+
+bool nodalAuto(CellType type) {
+  return !contactIntegrationDefined(type) ||
+         contactIntegrationRule(type, ContactIntegration::Auto, 0).atNodes();
+}
+
+// |J| of a skin cell at the reference point xi (length or area scale).
+double jacobian(const fem::ReferenceElement& ref, const std::vector<Point3>& x, const Eigen::Vector3d& xi) {
+  const Eigen::MatrixXd d = ref.gradients(xi);
+  Point3 t1{0, 0, 0};
+  Point3 t2{0, 0, 0};
+  for (int k = 0; k < ref.nodeCount(); ++k) {
+    t1 = t1 + d(k, 0) * x[static_cast<std::size_t>(k)];
+    if (ref.dimension() == 2) {
+      t2 = t2 + d(k, 1) * x[static_cast<std::size_t>(k)];
+    }
+  }
+  return ref.dimension() == 2 ? norm(cross(t1, t2)) : norm(t1);
+}
+
+} // namespace
+
+bool needsContactPoints(const ContactDefinition& definition) {
+  for (const auto& zone : definition.zones) {
+    if (!zone.resolve) {
+      continue;
+    }
+    if (zone.continuous.integration != ContactIntegration::Auto) {
+      return true;
+    }
+    const auto* cells = definition.mesh->cellGroup(zone.slaveGroup);
+    if (cells == nullptr) {
+      continue;
+    }
+    for (CellId c : *cells) {
+      if (!nodalAuto(definition.mesh->cellType(c))) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+ContinuousPointContactConstraint::ContinuousPointContactConstraint(
+    std::shared_ptr<const ContactDefinition> definition, const DofMap& dofs, fem::Modelling modelling)
+    : ContactConstraint(std::move(definition), dofs), modelling_(modelling) {}
+
+std::string ContinuousPointContactConstraint::resolutionEffects() const {
+  std::vector<std::string> zones;
+  for (const auto& z : definition_->zones) {
+    if (z.resolve) {
+      const auto& c = z.continuous;
+      zones.push_back(fmt::format(
+          "STANDARD COEF_CONT={} INTEGRATION='{}'{}", c.augmentation, integrationName(c.integration),
+          c.integrationOrder > 0 ? fmt::format(" ORDRE_INT={}", c.integrationOrder) : ""));
+    }
+  }
+  return fmt::format("{} (LAGS_C on the slave nodes, {} contact points), ALGO_RESO_CONT={}",
+                     fmt::join(zones, "; "), points_.size(),
+                     definition_->settings.continuous.statusLoop == StatusLoop::Newton ? "NEWTON"
+                                                                                       : "POINT_FIXE");
+}
+
+void ContinuousPointContactConstraint::buildPoints() {
+  const Mesh& mesh = *definition_->mesh;
+  const NodePosition position = meshPositions(mesh, nullptr); // weights on the initial configuration
+  multiplierOfNode_.assign(static_cast<std::size_t>(mesh.nodeCount()), -1);
+  for (const auto& l : links_) {
+    if (resolvedZone_[static_cast<std::size_t>(l.zone)] &&
+        multiplierOfNode_[static_cast<std::size_t>(l.slave)] < 0) {
+      multiplierOfNode_[static_cast<std::size_t>(l.slave)] = static_cast<int>(multiplierNode_.size());
+      multiplierNode_.push_back(l.slave);
+    }
+  }
+  for (std::size_t z = 0; z < definition_->zones.size(); ++z) {
+    const ContactZone& zone = definition_->zones[z];
+    const auto* cells = mesh.cellGroup(zone.slaveGroup);
+    if (cells == nullptr || !zone.resolve) {
+      continue;
+    }
+    for (CellId c : *cells) {
+      const CellType type = mesh.cellType(c);
+      const auto rule =
+          contactIntegrationRule(type, zone.continuous.integration, zone.continuous.integrationOrder);
+      const fem::ReferenceElement& ref = fem::referenceElement(type);
+      const auto nodes = mesh.cellNodes(c);
+      std::vector<Point3> x;
+      for (NodeId n : nodes) {
+        x.push_back(position(n));
+      }
+      for (int g = 0; g < rule.size(); ++g) {
+        const Eigen::Vector3d& xi = rule.points[static_cast<std::size_t>(g)];
+        const Eigen::VectorXd n = ref.values(xi);
+        ContactPoint p;
+        p.zone = static_cast<int>(z);
+        p.rho = zone.continuous.augmentation;
+        p.weight = rule.weights[static_cast<std::size_t>(g)] * jacobian(ref, x, xi);
+        double r = 0.0;
+        for (std::size_t k = 0; k < nodes.size(); ++k) {
+          p.nodes.push_back(nodes[k]);
+          p.shape.push_back(n(static_cast<Eigen::Index>(k)));
+          p.multiplier.push_back(multiplierOfNode_[static_cast<std::size_t>(nodes[k])]);
+          r += n(static_cast<Eigen::Index>(k)) * x[k][0];
+        }
+        if (modelling_ == fem::Modelling::Axisymmetric) {
+          p.weight *= r; // per radian, like the volume integrals
+        }
+        points_.push_back(std::move(p));
+      }
+    }
+  }
+  checkPointCount();
+  lambda_.assign(multiplierNode_.size(), 0.0);
+  lambdaStart_ = lambda_;
+  status_.assign(points_.size(), 0);
+  contactStart_ = status_;
+}
+
+// Fewer contact points than multipliers in a zone (GAUSS ORDRE_INT=1 on SEG2 or QUAD4 cells, 2 on
+// SEG3) leave a combination of LAGS_C without equation (zero at every point): refused.
+void ContinuousPointContactConstraint::checkPointCount() const {
+  for (std::size_t z = 0; z < definition_->zones.size(); ++z) {
+    std::set<int> multipliers;
+    long count = 0;
+    for (const ContactPoint& p : points_) {
+      if (p.zone == static_cast<int>(z)) {
+        ++count;
+        multipliers.insert(p.multiplier.begin(), p.multiplier.end());
+      }
+    }
+    multipliers.erase(-1);
+    if (count > 0 && count < static_cast<long>(multipliers.size())) {
+      const ContinuousZone& c = definition_->zones[z].continuous;
+      throw UserError(
+          Diagnostic::fatal(
+              "CONTACT_INTEG_1",
+              fmt::format("STAT_NON_LINE CONTACT: INTEGRATION='{}'{} gives {} contact points on the "
+                          "slave cells of zone {}, fewer than their {} slave nodes: the contact "
+                          "pressures LAGS_C would not all be determined",
+                          integrationName(c.integration),
+                          c.integrationOrder > 0 ? fmt::format(" ORDRE_INT={}", c.integrationOrder) : "",
+                          count, z + 1, multipliers.size()),
+              c.integrationAt)
+              .withNote(
+                  "raise ORDRE_INT (GAUSS: 2 on SEG2 and QUAD4 cells, 3 on SEG3) or use INTEGRATION='AUTO'"));
+    }
+  }
+}
+
+// Each point projected on the master cells its slave nodes are paired with (the admissible one
+// nearest to it), with the master's normal there, oriented as the nodes' links.
+void ContinuousPointContactConstraint::pairPoints() {
+  const Mesh& mesh = *definition_->mesh;
+  const std::vector<double> disp = nodalDisplacement(dofs_, mesh.nodeCount(), uPairing_);
+  const NodePosition position = meshPositions(mesh, &disp);
+  std::vector<std::vector<int>> linksOfNode(static_cast<std::size_t>(mesh.nodeCount()));
+  for (std::size_t k = 0; k < links_.size(); ++k) {
+    if (links_[k].paired && links_[k].masterCell >= 0) {
+      linksOfNode[static_cast<std::size_t>(links_[k].slave)].push_back(static_cast<int>(k));
+    }
+  }
+  const int dim = mesh.dimension(); // the master cells' parametric dimension is dim - 1
+  const int nc = dofs_.components();
+  for (ContactPoint& p : points_) {
+    const ContactZone& zone = definition_->zones[static_cast<std::size_t>(p.zone)];
+    p.paired = false;
+    p.row.clear();
+    Point3 x{0, 0, 0};
+    Point3 reference{0, 0, 0};
+    std::set<CellId> candidates;
+    for (std::size_t k = 0; k < p.nodes.size(); ++k) {
+      x = x + p.shape[k] * position(p.nodes[k]);
+      for (int l : linksOfNode[static_cast<std::size_t>(p.nodes[k])]) {
+        const ContactLink& link = links_[static_cast<std::size_t>(l)];
+        if (link.zone == p.zone) {
+          candidates.insert(link.masterCell);
+          reference = reference + link.normal;
+        }
+      }
+    }
+    Candidate best;
+    CellNodes bestCell;
+    for (CellId c : candidates) {
+      CellNodes cell;
+      cell.type = mesh.cellType(c);
+      const auto nodes = mesh.cellNodes(c);
+      cell.count = static_cast<int>(nodes.size());
+      for (std::size_t j = 0; j < nodes.size(); ++j) {
+        cell.x[j] = position(nodes[j]);
+      }
+      Candidate cand = projectionCandidate(cell, static_cast<int>(c), dim - 1, x, zone.extensionTolerance);
+      if (cand.admissible && cand.distance < best.distance) {
+        best = cand;
+        bestCell = cell;
+      }
+    }
+    if (best.cell < 0 || (zone.pairingDistance >= 0.0 && best.distance > zone.pairingDistance)) {
+      continue;
+    }
+    CellPoint cp;
+    evaluateCell(bestCell, best.xi, cp);
+    Point3 n = dim == 3 ? cross(cp.d1, cp.d2) : Point3{cp.d1[1], -cp.d1[0], 0.0};
+    n = (1.0 / norm(n)) * n;
+    if (dot(n, reference) < 0.0) {
+      n = -1.0 * n;
+    }
+    p.paired = true;
+    p.gap = dot(n, x - cp.x);
+    const auto masterNodes = mesh.cellNodes(static_cast<CellId>(best.cell));
+    for (int c = 0; c < nc; ++c) {
+      const auto cc = static_cast<std::size_t>(c);
+      for (std::size_t k = 0; k < p.nodes.size(); ++k) {
+        const int e = dofs_.dof(p.nodes[k], c);
+        if (e >= 0 && p.shape[k] != 0.0 && n[cc] != 0.0) {
+          p.row.emplace_back(e, p.shape[k] * n[cc]);
+        }
+      }
+      for (std::size_t j = 0; j < masterNodes.size(); ++j) {
+        const int e = dofs_.dof(masterNodes[j], c);
+        if (e >= 0 && cp.shape.n[j] != 0.0 && n[cc] != 0.0) {
+          p.row.emplace_back(e, -cp.shape.n[j] * n[cc]);
+        }
+      }
+    }
+  }
+}
+
+void ContinuousPointContactConstraint::paired() {
+  if (points_.empty() && multiplierNode_.empty()) {
+    buildPoints(); // once: the links are the slave nodes
+  }
+  pairPoints();
+}
+
+double ContinuousPointContactConstraint::lambdaAt(const ContactPoint& p) const {
+  double l = 0.0;
+  for (std::size_t k = 0; k < p.nodes.size(); ++k) {
+    if (p.multiplier[k] >= 0) {
+      l += p.shape[k] * lambda_[static_cast<std::size_t>(p.multiplier[k])];
+    }
+  }
+  return l;
+}
+
+double ContinuousPointContactConstraint::gapAt(const ContactPoint& p, const Eigen::VectorXd& u) const {
+  double g = p.gap;
+  for (const auto& [e, a] : p.row) {
+    g += a * (u(e) - uPairing_(e));
+  }
+  return g;
+}
+
+std::vector<char> ContinuousPointContactConstraint::statusAt(const Eigen::VectorXd& u) const {
+  std::vector<char> s(points_.size(), 0);
+  for (std::size_t q = 0; q < points_.size(); ++q) {
+    const ContactPoint& p = points_[q];
+    if (q < frozen_.size() && frozen_[q] >= 0) {
+      s[q] = static_cast<char>(frozen_[q]);
+    } else if (p.paired && p.weight != 0.0) {
+      s[q] = lambdaAt(p) + p.rho * gapAt(p, u) < 0.0 ? 1 : 0;
+    }
+  }
+  return s;
+}
+
+const std::vector<char>& ContinuousPointContactConstraint::currentStatus(const Eigen::VectorXd& u) {
+  if (definition_->settings.continuous.statusLoop == StatusLoop::Newton && !useInitial_) {
+    status_ = statusAt(u);
+  }
+  return status_;
+}
+
+void ContinuousPointContactConstraint::beginStep(const Eigen::VectorXd& u, double time) {
+  lambda_ = lambdaStart_; // a step cut restarts from the multipliers of its start
+  ContactConstraint::beginStep(u, time);
+  statusIterations_ = 0;
+  changes_.assign(points_.size(), 0);
+  frozen_.assign(points_.size(), -1);
+  continuation_.clear();
+  useInitial_ = true;
+  lastStatus_.clear();
+  status_.assign(points_.size(), 0);
+  for (std::size_t q = 0; q < points_.size(); ++q) {
+    const ContactPoint& p = points_[q];
+    if (!firstStep_) {
+      status_[q] = p.paired ? contactStart_[q] : 0;
+      continue;
+    }
+    if (!p.paired || p.weight == 0.0) {
+      continue;
+    }
+    const ContinuousZone& c = definition_->zones[static_cast<std::size_t>(p.zone)].continuous;
+    const double g = gapAt(p, u);
+    status_[q] = c.init == ContactInit::Yes ? 1
+                 : c.init == ContactInit::Interpenetrated
+                     ? (g < 0.0 && (c.initDistance < 0.0 || -g <= c.initDistance) ? 1 : 0)
+                     : 0;
+  }
+}
+
+void ContinuousPointContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::VectorXd& forces,
+                                                 std::vector<Eigen::Triplet<double>>* tangent) {
+  const std::vector<char>& status = currentStatus(u);
+  int active = 0;
+  double penetration = 0.0;
+  for (std::size_t q = 0; q < points_.size(); ++q) {
+    const ContactPoint& p = points_[q];
+    if (!p.paired) {
+      continue;
+    }
+    const bool on = status[q] != 0;
+    const double g = gapAt(p, u);
+    if (on) {
+      ++active;
+      penetration = std::max(penetration, -g);
+      const double pressure = lambdaAt(p) + p.rho * g; // -w (lambda + rho g) grad g
+      for (const auto& [e, a] : p.row) {
+        forces(e) -= p.weight * pressure * a;
+      }
+    }
+    if (tangent != nullptr) {
+      const double c = on ? p.rho * p.weight : 0.0; // zeros keep the pattern of the pairing
+      for (const auto& [e, a] : p.row) {
+        for (const auto& [f, b] : p.row) {
+          tangent->emplace_back(e, f, c * a * b);
+        }
+      }
+    }
+  }
+  noteActive_ = active;
+  notePenetration_ = penetration;
+}
+
+void ContinuousPointContactConstraint::correct(const Eigen::VectorXd& u, Eigen::VectorXd& ddu,
+                                               Eigen::VectorXd& dlambda, SaddleSolver& solver) {
+  const std::vector<char> status = currentStatus(u);
+  useInitial_ = false;
+  lastStatus_ = status;
+  const auto nm = static_cast<Eigen::Index>(multiplierNode_.size());
+  if (nm == 0) {
+    return;
+  }
+  const Eigen::Index n = ddu.size();
+  // B (rows: multipliers) on the equations, M, G and B ddu
+  std::vector<std::vector<std::pair<int, double>>> b(static_cast<std::size_t>(nm));
+  Eigen::MatrixXd mass = Eigen::MatrixXd::Zero(nm, nm);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(nm);
+  std::vector<char> used(static_cast<std::size_t>(nm), 0);
+  for (std::size_t q = 0; q < points_.size(); ++q) {
+    const ContactPoint& p = points_[q];
+    if (!p.paired || p.weight == 0.0) {
+      continue;
+    }
+    if (status[q] != 0) {
+      const double g = gapAt(p, u);
+      double adu = 0.0;
+      for (const auto& [e, a] : p.row) {
+        adu += a * ddu(e);
+      }
+      for (std::size_t k = 0; k < p.nodes.size(); ++k) {
+        const int i = p.multiplier[k];
+        if (i < 0 || p.shape[k] == 0.0) {
+          continue;
+        }
+        const double c = p.weight * p.shape[k];
+        for (const auto& [e, a] : p.row) {
+          b[static_cast<std::size_t>(i)].emplace_back(e, c * a);
+        }
+        rhs(i) += c * (g + adu);
+        used[static_cast<std::size_t>(i)] = 1;
+      }
+    } else {
+      for (std::size_t k = 0; k < p.nodes.size(); ++k) {
+        for (std::size_t l = 0; l < p.nodes.size(); ++l) {
+          if (p.multiplier[k] >= 0 && p.multiplier[l] >= 0) {
+            mass(p.multiplier[k], p.multiplier[l]) += p.weight * p.shape[k] * p.shape[l] / p.rho;
+          }
+        }
+      }
+    }
+  }
+  addContactIterations(1);
+  // The unknowns: the multipliers of the nodes with a point in contact in their cells (a row of
+  // B); the others are 0, as in the nodal formulation (their consistent equation, the block M of
+  // the points out of contact, is singular with rules of negative weights or too few points, e.g.
+  // GAUSS 3 on TRIA6, when no point is in contact).
+  std::vector<Eigen::Index> free;
+  for (Eigen::Index i = 0; i < nm; ++i) {
+    if (used[static_cast<std::size_t>(i)] != 0) {
+      free.push_back(i);
+    } else {
+      lambda_[static_cast<std::size_t>(i)] = 0.0;
+    }
+  }
+  const Eigen::VectorXd lambda = Eigen::Map<const Eigen::VectorXd>(lambda_.data(), nm);
+  rhs -= mass * lambda;
+  const auto nf = static_cast<Eigen::Index>(free.size());
+  std::vector<Eigen::Index> coupled; // positions in `free` with a row of B
+  for (Eigen::Index j = 0; j < nf; ++j) {
+    if (used[static_cast<std::size_t>(free[static_cast<std::size_t>(j)])] != 0) {
+      coupled.push_back(j);
+    }
+  }
+  Eigen::MatrixXd s(nf, nf);
+  Eigen::VectorXd r(nf);
+  for (Eigen::Index i = 0; i < nf; ++i) {
+    r(i) = rhs(free[static_cast<std::size_t>(i)]);
+    for (Eigen::Index j = 0; j < nf; ++j) {
+      s(i, j) = mass(free[static_cast<std::size_t>(i)], free[static_cast<std::size_t>(j)]);
+    }
+  }
+  const auto rowOf = [&](Eigen::Index j) -> const std::vector<std::pair<int, double>>& {
+    return b[static_cast<std::size_t>(free[static_cast<std::size_t>(j)])];
+  };
+  constexpr std::size_t block = 64; // S += B K^-1 B^T by blocks of columns
+  for (std::size_t first = 0; first < coupled.size(); first += block) {
+    const std::size_t cols = std::min(block, coupled.size() - first);
+    Eigen::MatrixXd x = Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(cols));
+    for (std::size_t j = 0; j < cols; ++j) {
+      for (const auto& [e, a] : rowOf(coupled[first + j])) {
+        x(e, static_cast<Eigen::Index>(j)) += a;
+      }
+    }
+    solver.solveHomogeneous(x);
+    for (Eigen::Index i : coupled) {
+      for (const auto& [e, a] : rowOf(i)) {
+        for (std::size_t j = 0; j < cols; ++j) {
+          s(i, coupled[first + j]) += a * x(e, static_cast<Eigen::Index>(j));
+        }
+      }
+    }
+  }
+  const Eigen::LDLT<Eigen::MatrixXd> ldlt(0.5 * (s + s.transpose()));
+  const Eigen::VectorXd d = ldlt.vectorD();
+  const double scale = nf > 0 ? d.cwiseAbs().maxCoeff() : 0.0;
+  for (Eigen::Index p = 0; p < nf; ++p) {
+    if (!(std::fabs(d(p)) > 1e-12 * scale)) {
+      const Eigen::PermutationMatrix<Eigen::Dynamic> perm(ldlt.transpositionsP());
+      const Eigen::PermutationMatrix<Eigen::Dynamic> inverse(perm.inverse());
+      redundant(static_cast<int>(free[static_cast<std::size_t>(inverse.indices()(p))]));
+    }
+  }
+  const Eigen::VectorXd dl = nf > 0 ? Eigen::VectorXd(ldlt.solve(r)) : Eigen::VectorXd();
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
+  bool any = false;
+  for (Eigen::Index j = 0; j < nf; ++j) {
+    lambda_[static_cast<std::size_t>(free[static_cast<std::size_t>(j)])] += dl(j);
+    for (const auto& [e, a] : rowOf(j)) {
+      f(e) += a * dl(j);
+      any = true;
+    }
+  }
+  if (!any) {
+    return;
+  }
+  Eigen::VectorXd dx;
+  Eigen::VectorXd dy;
+  solver.solve(f, Eigen::VectorXd::Zero(dlambda.size()), Eigen::VectorXd::Zero(n), dx, dy);
+  ddu -= dx;
+  if (dy.size() == dlambda.size()) {
+    dlambda -= dy;
+  }
+}
+
+void ContinuousPointContactConstraint::redundant(int multiplier) const {
+  throw UserError(
+      Diagnostic::fatal(
+          "CONTACT_11",
+          fmt::format("the contact conditions are redundant at INST {}: the weighted gap of slave "
+                      "node {} cannot move independently of the other nodes in contact",
+                      time_,
+                      definition_->mesh->nodeName(multiplierNode_[static_cast<std::size_t>(multiplier)])),
+          definition_->location)
+          .withNote("a slave node also held by DDL_IMPO or a symmetry condition in the normal direction, or "
+                    "more contact points than the master surface can hold, make the conditions redundant "
+                    "(notice §4.7): exclude it with SANS_GROUP_NO, or use INTEGRATION='AUTO'"));
+}
+
+bool ContinuousPointContactConstraint::acceptResolution(const Eigen::VectorXd& u) {
+  continuation_.clear();
+  const auto& c = definition_->settings.continuous;
+  const std::vector<char> now = statusAt(u);
+  const bool newton = c.statusLoop == StatusLoop::Newton;
+  const std::vector<char>& used = newton ? lastStatus_ : status_;
+  if (points_.empty() || now == used || (newton && lastStatus_.empty() && now == status_)) {
+    return true;
+  }
+  int changed = 0;
+  int frozen = 0;
+  for (std::size_t q = 0; q < now.size(); ++q) {
+    if (q >= used.size() || now[q] == used[q]) {
+      continue;
+    }
+    ++changed;
+    // ADAPTATION='CYCLAGE': a point that went in and out of contact twice in the step keeps the
+    // status its multiplier asks for (in contact while compressed) for the rest of it.
+    const std::string& adaptation =
+        definition_->zones[static_cast<std::size_t>(points_[q].zone)].continuous.adaptation;
+    if (++changes_[q] >= 4 && (adaptation == "CYCLAGE" || adaptation == "TOUT")) {
+      frozen_[q] = lambdaAt(points_[q]) < 0.0 ? 1 : 0;
+      ++frozen;
+    }
+  }
+  if (frozen > 0) {
+    noteAlarm(
+        fmt::format("CONTACT_27: {} contact point(s) cycled in and out of contact at INST {} (flip-flop): "
+                    "their status is frozen for the rest of the step (ADAPTATION='CYCLAGE'); check the "
+                    "contact pressure there",
+                    frozen, time_));
+  }
+  status_ = statusAt(u);
+  ++statusIterations_;
+  const auto count = static_cast<int>(points_.size());
+  const int cap = newton                ? 2 * count + 10
+                  : c.iterationsPerNode ? c.statusIterationFactor * static_cast<int>(multiplierNode_.size())
+                                        : c.maxStatusIterations;
+  if (statusIterations_ > cap) {
+    throw UserError(
+        Diagnostic::noConvergence("CONTACT_26",
+                                  fmt::format("the contact status loop did not converge at INST {}: after {} "
+                                              "status iterations {} contact point(s) still change status",
+                                              time_, cap, changed),
+                                  definition_->location)
+            .withNote(newton
+                          ? "try ALGO_RESO_CONT='POINT_FIXE', or refine the list of instants"
+                          : "raise ITER_CONT_MAXI (or ITER_CONT_MULT with ITER_CONT_TYPE='MULT'), or refine "
+                            "the list of instants"));
+  }
+  lastStatus_ = status_;
+  continuation_ =
+      fmt::format("contact status changed on {} contact point(s): Newton iterations go on", changed);
+  return false;
+}
+
+void ContinuousPointContactConstraint::nodalForces(const Eigen::VectorXd& u, std::vector<double>& force,
+                                                   std::vector<char>& touching) const {
+  force.assign(multiplierNode_.size(), 0.0);
+  touching.assign(multiplierNode_.size(), 0);
+  const std::vector<char> status = statusAt(u);
+  for (std::size_t q = 0; q < points_.size(); ++q) {
+    const ContactPoint& p = points_[q];
+    if (status[q] == 0) {
+      continue;
+    }
+    const double pressure = lambdaAt(p) + p.rho * gapAt(p, u);
+    for (std::size_t k = 0; k < p.nodes.size(); ++k) {
+      const int i = p.multiplier[k];
+      if (i >= 0 && p.shape[k] != 0.0) {
+        force[static_cast<std::size_t>(i)] -= p.weight * p.shape[k] * pressure;
+        touching[static_cast<std::size_t>(i)] = 1;
+      }
+    }
+  }
+}
+
+std::vector<LinkState> ContinuousPointContactConstraint::resolvedStates(const Eigen::VectorXd& u) const {
+  const Eigen::VectorXd g = gapsAt(u);
+  std::vector<double> force;
+  std::vector<char> touching;
+  nodalForces(u, force, touching);
+  std::vector<LinkState> states(rows_.link.size());
+  for (std::size_t r = 0; r < states.size(); ++r) {
+    const NodeId node = links_[static_cast<std::size_t>(rows_.link[r])].slave;
+    const int i = multiplierOfNode_[static_cast<std::size_t>(node)];
+    states[r].gap = g(static_cast<Eigen::Index>(r));
+    if (i >= 0 && touching[static_cast<std::size_t>(i)] != 0) {
+      states[r].normalForce = force[static_cast<std::size_t>(i)];
+      states[r].status = LinkStatus::Sliding;
+    }
+  }
+  return states;
+}
+
+void ContinuousPointContactConstraint::accepted(const std::vector<LinkState>& rowStates) {
+  (void)rowStates;
+  lambdaStart_ = lambda_;
+  contactStart_ = status_;
+  firstStep_ = false;
+}
+
+std::string ContinuousPointContactConstraint::iterationNote() const {
+  int changes = 0;
+  for (std::size_t q = 0; q < status_.size() && q < lastStatus_.size(); ++q) {
+    changes += status_[q] != lastStatus_[q] ? 1 : 0;
+  }
+  return fmt::format("CONT {} pts act. {} chg pene {:.2e}", noteActive_, changes, notePenetration_);
+}
+
+std::string ContinuousPointContactConstraint::continuationNote() const {
+  return continuation_.empty() ? ContactConstraint::continuationNote() : continuation_;
+}
+
+void ContinuousPointContactConstraint::store(ResultStep& step) const {
+  ContactConstraint::store(step);
+  auto found = step.fields.find("DEPL");
+  if (found == step.fields.end() || found->second == nullptr) {
+    return;
+  }
+  const Field& depl = *found->second;
+  if (depl.componentIndex("LAGS_C")) {
+    return;
+  }
+  std::vector<std::string> components = depl.components();
+  components.push_back("LAGS_C");
+  const std::size_t nodes = depl.entityCount();
+  const std::size_t c0 = depl.componentCount();
+  auto out = std::make_shared<Field>(Field::nodal(depl.quantity(), components, nodes));
+  out->markPartial();
+  for (std::size_t n = 0; n < nodes; ++n) {
+    for (std::size_t c = 0; c < c0; ++c) {
+      out->value(n, c) = depl.value(n, c);
+      if (depl.defined(n, c)) {
+        out->setDefined(n, c);
+      }
+    }
+  }
+  for (std::size_t i = 0; i < multiplierNode_.size(); ++i) {
+    const auto n = static_cast<std::size_t>(multiplierNode_[i]);
+    out->value(n, c0) = lambda_[i];
+    out->setDefined(n, c0);
+  }
+  step.fields["DEPL"] = out;
+}
+
+std::string ContinuousPointContactConstraint::singularNote() const {
+  return "with FORMULATION='CONTINUE' a body held only by contact is held once its contact points are in "
+         "contact (the augmented term COEF_CONT x w x grad g grad g of the points in contact stiffens it): "
+         "CONTACT_INIT='OUI' puts every contact point in contact at the first iteration; otherwise impose "
+         "DDL_IMPO on one of its points or hold it with springs of small stiffness (notice §4.4.2)";
+}
+
+} // namespace stella::contact

@@ -1,0 +1,100 @@
+#pragma once
+// Continuous contact with contact points that are not slave nodes (DEFI_CONTACT
+// FORMULATION='CONTINUE', ZONE/INTEGRATION='GAUSS', 'SIMPSON', 'NCOTES' with ORDRE_INT, and 'AUTO' on
+// TRIA6 and QUAD8 slave cells, whose code_aster points are not their nodes; ContinuousIntegrationRule).
+// ALGO_CONT='STANDARD', frictionless; the nodal cases stay with ContinuousContactConstraint.
+//
+// The unknowns LAGS_C (lambda_i) are on the slave nodes; at each integration point p of a slave
+// cell (weight w_p = W_p |J(xi_p)| on the initial configuration, x r_p in AXIS) the multiplier is
+// interpolated, lambda_p = sum_i N_i(p) lambda_i, and the point is paired on the master surface
+// (orthogonal projection on the master cells of its cell's slave nodes, the master's normal): gap
+// g_p, gradient A_p (+N_i(p) n on the slave nodes, -phi_j n on the master nodes). With rho =
+// COEF_CONT, point p is in contact (set C) when lambda_p + rho g_p < 0, and the equations are
+//   forces      - sum_{p in C} w_p (lambda_p + rho g_p) A_p        on the structure
+//   lambda_i      sum_{p in C} w_p N_i(p) g_p - (1/rho) sum_{p not in C} w_p N_i(p) lambda_p = 0.
+// Their Newton matrix is symmetric: K + rho sum_C w A^T A (the tangent added here), the coupling
+// B = sum_C w_p N(p) A_p and the block -M, M = (1/rho) sum_{not C} w_p N N^T. correct() eliminates
+// lambda exactly: (B K^-1 B^T + M) dlambda = G + B ddu - M lambda (G_i = sum_C w N_i g_p), the
+// columns of K^-1 B^T through the driver's factorisation, then ddu -= K^-1 B^T dlambda; the
+// multipliers of the nodes without a point in contact in their cells are 0 (as in the nodal
+// formulation: their block of M alone is singular for some rules). The status
+// loop (ALGO_RESO_CONT NEWTON or POINT_FIXE), CONTACT_INIT and ADAPTATION='CYCLAGE' act on the
+// points as the nodal formulation acts on the nodes. CONT_NOEU per slave node: RN the nodal contact
+// force sum_C w_p N_i(p) (-(lambda_p + rho g_p)), CONT 2 when a point of its cells with N_i != 0 is
+// in contact, JEU the node's own gap.
+
+#include "solver/contact/ContactConstraint.hpp"
+#include "solver/fem/Modelling.hpp"
+
+namespace stella::contact {
+
+// Whether a resolved zone of a continuous definition integrates at points that are not slave nodes.
+bool needsContactPoints(const ContactDefinition& definition);
+
+class ContinuousPointContactConstraint : public ContactConstraint {
+public:
+  ContinuousPointContactConstraint(std::shared_ptr<const ContactDefinition> definition, const DofMap& dofs,
+                                   fem::Modelling modelling);
+
+  void beginStep(const Eigen::VectorXd& u, double time) override;
+  void addForces(const Eigen::VectorXd& u, Eigen::VectorXd& forces,
+                 std::vector<Eigen::Triplet<double>>* tangent) override;
+  bool symmetric() const override { return true; }
+  void correct(const Eigen::VectorXd& u, Eigen::VectorXd& ddu, Eigen::VectorXd& dlambda,
+               SaddleSolver& solver) override;
+  void store(ResultStep& step) const override;
+  std::string singularNote() const override;
+  std::string continuationNote() const override;
+  std::string iterationNote() const override;
+
+  int contactPoints() const { return static_cast<int>(points_.size()); }
+
+protected:
+  std::string resolutionEffects() const override;
+  void paired() override;
+  std::vector<LinkState> resolvedStates(const Eigen::VectorXd& u) const override;
+  bool acceptResolution(const Eigen::VectorXd& u) override;
+  void accepted(const std::vector<LinkState>& rowStates) override;
+
+private:
+  struct ContactPoint {
+    int zone = 0;
+    std::vector<int> multiplier; // per node of its slave cell: index of its LAGS_C, -1 excluded
+    std::vector<NodeId> nodes;   // the slave cell's nodes
+    std::vector<double> shape;   // N_i at the point
+    double weight = 0.0;
+    double rho = 0.0;
+    bool paired = false;
+    std::vector<std::pair<int, double>> row; // A_p on the equations
+    double gap = 0.0;                        // at the pairing
+  };
+  void buildPoints();
+  void checkPointCount() const;
+  void pairPoints();
+  double lambdaAt(const ContactPoint& p) const;
+  double gapAt(const ContactPoint& p, const Eigen::VectorXd& u) const;
+  std::vector<char> statusAt(const Eigen::VectorXd& u) const;
+  const std::vector<char>& currentStatus(const Eigen::VectorXd& u);
+  // Per multiplier: the nodal contact force (positive in compression) and whether a point of its
+  // cells with N_i != 0 is in contact.
+  void nodalForces(const Eigen::VectorXd& u, std::vector<double>& force, std::vector<char>& touching) const;
+  [[noreturn]] void redundant(int multiplier) const;
+
+  fem::Modelling modelling_;
+  std::vector<ContactPoint> points_;
+  std::vector<NodeId> multiplierNode_;
+  std::vector<int> multiplierOfNode_; // per mesh node, -1
+  std::vector<double> lambda_;
+  std::vector<double> lambdaStart_;
+  std::vector<char> status_;       // per point
+  std::vector<char> lastStatus_;   // per point, at the last correction
+  std::vector<char> contactStart_; // per point, at the last accepted step
+  std::vector<int> changes_;
+  std::vector<int> frozen_;
+  bool useInitial_ = true;
+  bool firstStep_ = true;
+  int statusIterations_ = 0;
+  std::string continuation_;
+};
+
+} // namespace stella::contact
