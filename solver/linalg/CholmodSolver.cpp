@@ -39,6 +39,26 @@ public:
   CholmodSolver& operator=(const CholmodSolver&) = delete;
 
   std::string_view backendName() const override { return "CHOLMOD"; }
+  double factorisationFlops() const override { return factorised_ ? common_.fl : 0.0; }
+  std::string orderingUsed() const override {
+    if (factor_ == nullptr) {
+      return "none";
+    }
+    switch (factor_->ordering) {
+    case CHOLMOD_NATURAL:
+      return "NATURAL";
+    case CHOLMOD_GIVEN:
+      return "GIVEN";
+    case CHOLMOD_AMD:
+      return "AMD";
+    case CHOLMOD_METIS:
+      return "METIS";
+    case CHOLMOD_NESDIS:
+      return "NESDIS";
+    default:
+      return "other";
+    }
+  }
 
   void analyse(const SparseMatrix& a) override {
     if (a.storage() != Storage::Upper) {
@@ -67,6 +87,7 @@ public:
       throw SingularMatrixError("CHOLMOD",
                                 perm != nullptr ? perm[factor_->minor] : static_cast<int>(factor_->minor));
     }
+    factorised_ = common_.status >= CHOLMOD_OK;
     if (common_.status < CHOLMOD_OK) {
       throw LinearSolverError("CHOLMOD: factorisation failed (status " + std::to_string(common_.status) +
                               ")");
@@ -138,6 +159,7 @@ private:
   cholmod_sparse matrix_{};
   cholmod_factor* factor_ = nullptr;
   std::vector<int> rowStart_;
+  bool factorised_ = false;
 };
 
 } // namespace

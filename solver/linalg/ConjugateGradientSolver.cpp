@@ -17,6 +17,8 @@ public:
       : LinearSolver(MatrixKind::SymmetricPositiveDefinite), options_(o) {}
 
   std::string_view backendName() const override { return "GCPC"; }
+  double factorisationFlops() const override { return 0.0; } // incomplete Cholesky: not counted
+  std::string orderingUsed() const override { return "none"; }
 
   void analyse(const SparseMatrix& a) override {
     if (a.storage() != Storage::Upper) {

@@ -79,6 +79,13 @@ public:
   // matrix's largest term divided by `ratio` (else a penalty 1e7 times the stiffness makes the
   // structure's own pivots look null at NPREC = 8).
   void setPenaltyRatio(double ratio) { penaltyRatio_ = ratio > 1.0 ? ratio : 1.0; }
+  // Floating-point operations of the last factorisation as the backend counts them (CHOLMOD:
+  // cholmod_common::fl of the analysis, exact for LL^T; MUMPS: RINFOG(3); UMFPACK: its
+  // UMFPACK_FLOPS), 0 before any factorisation. Divided by the factorisation's time it gives
+  // the achieved rate that doc/bench/factor-rate.md compares with dgemm's.
+  virtual double factorisationFlops() const = 0;
+  // The fill-reducing ordering the last analysis used, named as RENUM names it (AMD, METIS...).
+  virtual std::string orderingUsed() const = 0;
 
 protected:
   explicit LinearSolver(MatrixKind k) : kind_(k) {}

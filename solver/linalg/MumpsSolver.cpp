@@ -36,6 +36,27 @@ int orderingCode(const std::string& renum) {
   return 7; // AUTO
 }
 
+std::string orderingName(int code) {
+  switch (code) {
+  case 0:
+    return "AMD";
+  case 1:
+    return "USER";
+  case 2:
+    return "AMF";
+  case 3:
+    return "SCOTCH";
+  case 4:
+    return "PORD";
+  case 5:
+    return "METIS";
+  case 6:
+    return "QAMD";
+  default:
+    return "none";
+  }
+}
+
 class MumpsSolver final : public LinearSolver {
 public:
   MumpsSolver(const SolverOptions& o, MatrixKind k) : LinearSolver(k), options_(o) {
@@ -74,6 +95,8 @@ public:
   MumpsSolver& operator=(const MumpsSolver&) = delete;
 
   std::string_view backendName() const override { return "MUMPS"; }
+  double factorisationFlops() const override { return factorised_ ? id_.rinfog[2] : 0.0; } // RINFOG(3)
+  std::string orderingUsed() const override { return orderingName(id_.infog[6]); }         // INFOG(7)
 
   void analyse(const SparseMatrix& a) override {
     if (a.storage() != storageFor(kind())) {
@@ -123,6 +146,7 @@ public:
       throw SingularMatrixError("MUMPS", -1);
     }
     check("factorisation");
+    factorised_ = true;
     if (options_.stopIfSingular && id_.infog[27] > 0) { // INFOG(28): null pivots found
       throw SingularMatrixError("MUMPS", id_.pivnul_list != nullptr ? id_.pivnul_list[0] - 1 : -1);
     }
@@ -204,6 +228,7 @@ private:
   SolverOptions options_;
   DMUMPS_STRUC_C id_;
   bool initialised_ = false;
+  bool factorised_ = false;
   std::vector<MUMPS_INT> irn_, jcn_;
 };
 

@@ -29,6 +29,17 @@ public:
   UmfpackSolver& operator=(const UmfpackSolver&) = delete;
 
   std::string_view backendName() const override { return "UMFPACK"; }
+  double factorisationFlops() const override { return numeric_ != nullptr ? info_[UMFPACK_FLOPS] : 0.0; }
+  std::string orderingUsed() const override {
+    if (symbolic_ == nullptr) {
+      return "none";
+    }
+    const auto used = static_cast<int>(info_[UMFPACK_ORDERING_USED]);
+    return used == UMFPACK_ORDERING_AMD     ? "AMD"
+           : used == UMFPACK_ORDERING_METIS ? "METIS"
+           : used == UMFPACK_ORDERING_GIVEN ? "GIVEN"
+                                            : "other";
+  }
 
   void analyse(const SparseMatrix& a) override {
     release();
