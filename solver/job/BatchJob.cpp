@@ -6,6 +6,7 @@
 #include "TeeStream.hpp"
 #include "catalog/Catalog.hpp"
 #include "interpreter/Interpreter.hpp"
+#include "solver/linalg/BlasThreads.hpp"
 #include "solver/session/ExceptionDiagnostic.hpp"
 #include "solver/session/MemoryLimit.hpp"
 #include "solver/session/Session.hpp"
@@ -431,6 +432,7 @@ JobResult runInWork(const JobSpec& spec, const RunOptions& options, const fs::pa
     if (spec.memoryLimit > 0.0) {
       mess << fmt::format("  Memory limit of the run: {:g} MiB (P memory_limit)\n", spec.memoryLimit);
     }
+    mess << linalg::applyBlasThreads(spec.cpus); // P ncpus or STELLA_BLAS_THREADS
     session = runStudy(spec, work, mess, resuFile, sessionOptions, options, missing);
   }
   armTimeLimit(0); // the copy-back is not stopped

@@ -54,4 +54,29 @@ int blasThreadsFor(int exportCpus) {
   return blasThreadsFromEnvironment().value_or(exportCpus >= 1 ? exportCpus : 1);
 }
 
+std::string applyBlasThreads(int exportCpus) {
+  const int cpus = exportCpus >= 1 ? exportCpus : 1;
+  std::string source = "P ncpus";
+  int wanted = cpus;
+  try {
+    if (auto n = blasThreadsFromEnvironment()) {
+      wanted = *n;
+      source = "STELLA_BLAS_THREADS";
+    }
+  } catch (const std::invalid_argument& e) {
+    source = std::string(e.what()) + ": P ncpus used instead";
+  }
+  const int effective = setBlasThreads(wanted);
+  if (wanted == 1 && source == "P ncpus") {
+    return {};
+  }
+  std::string line = "  BLAS threads of the factorisations: " + std::to_string(effective) + " (" + source;
+  if (effective != wanted) {
+    line += "; " + std::to_string(wanted) + " asked, the BLAS (" +
+            (blasDescription().empty() ? std::string("not OpenBLAS") : blasDescription()) + ") gives " +
+            std::to_string(effective);
+  }
+  return line + ")\n";
+}
+
 } // namespace stella::linalg

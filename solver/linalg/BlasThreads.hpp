@@ -26,5 +26,10 @@ std::string blasDescription();
 std::optional<int> blasThreadsFromEnvironment();
 // The thread count for a job with `P ncpus` = exportCpus: the environment's, else exportCpus.
 int blasThreadsFor(int exportCpus);
+// Sets the BLAS threads of a job with `P ncpus` = exportCpus (blasThreadsFor) and returns the
+// message-file line that says so; an empty line when the count is 1 and the environment variable
+// is unset (the default says nothing). A malformed STELLA_BLAS_THREADS is reported on the line
+// and the export's count used.
+std::string applyBlasThreads(int exportCpus);
 
 } // namespace stella::linalg

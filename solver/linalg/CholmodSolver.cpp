@@ -2,6 +2,7 @@
 // The pattern's upper rows are the lower columns of a CSC matrix (stype = -1).
 
 #include "solver/linalg/Backends.hpp"
+#include "solver/linalg/Ordering.hpp"
 
 #include <cholmod.h>
 
@@ -19,14 +20,16 @@ public:
     common_.final_ll = 1;
     common_.print = 0;
     common_.error_handler = nullptr;
-    if (o.renumbering == "METIS") {
+    // RENUM (SOLVEUR.cata): METIS nested dissection; MDA (MULT_FRONT) or AMD: approximate minimum
+    // degree; RCMK (LDLT): reverse Cuthill-McKee given as the permutation; AUTO: CHOLMOD's choice
+    // (AMD, then METIS when AMD's fill is large).
+    const std::string& r = o.renumbering;
+    if (r == "METIS" || r == "MDA" || r == "AMD" || r == "RCMK") {
       common_.nmethods = 1;
-      common_.method[0].ordering = CHOLMOD_METIS;
+      common_.method[0].ordering = r == "METIS" ? CHOLMOD_METIS : r == "RCMK" ? CHOLMOD_GIVEN : CHOLMOD_AMD;
       common_.postorder = 1;
-    } else if (o.renumbering == "AMD") {
-      common_.nmethods = 1;
-      common_.method[0].ordering = CHOLMOD_AMD;
-      common_.postorder = 1;
+    } else if (r != "AUTO") {
+      throw LinearSolverError("CHOLMOD: RENUM='" + r + "' is not available (METIS, MDA, AMD, RCMK or AUTO)");
     }
   }
   ~CholmodSolver() override {
@@ -73,7 +76,12 @@ public:
     if (factor_ != nullptr) {
       cholmod_free_factor(&factor_, &common_);
     }
-    factor_ = cholmod_analyze(&matrix_, &common_);
+    if (options_.renumbering == "RCMK") {
+      std::vector<int> order = reverseCuthillMcKee(p);
+      factor_ = cholmod_analyze_p(&matrix_, order.data(), nullptr, 0, &common_);
+    } else {
+      factor_ = cholmod_analyze(&matrix_, &common_);
+    }
     if (factor_ == nullptr || common_.status < CHOLMOD_OK) {
       throw LinearSolverError("CHOLMOD: analysis failed (status " + std::to_string(common_.status) + ")");
     }

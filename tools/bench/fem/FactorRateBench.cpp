@@ -1,11 +1,12 @@
 // The factorisation's achieved rate against the machine's dense limit (issue 20 "know the
 // limit"; report: doc/bench/factor-rate.md).
 //
-//   stella-bench-factor-rate [--threads 1,2] [--dgemm N] [--renum METIS] DIVISIONS...
+//   stella-bench-factor-rate [--threads 1,2] [--dgemm N] [--cholmod METIS] [--mumps AUTO] DIVISIONS...
 //
 // For each BLAS thread count: the rate of dgemm (C = A B, N x N, 2 N^3 flops, best of 3) and,
 // for each size of the clamped HEXA8 cube (CubeStiffness.hpp), one analysis and factorisation by
-// CHOLMOD (MULT_FRONT) and by MUMPS with the given RENUM; the backend's own flop count
+// CHOLMOD (MULT_FRONT) and by MUMPS with the given RENUM (default: the catalogue's defaults,
+// METIS and AUTO; the sequential MUMPS has no METIS); the backend's own flop count
 // (cholmod_common::fl, MUMPS RINFOG(3)) divided by the factorisation's wall time is the achieved
 // rate, given as a fraction of dgemm's at the same thread count. The solution of each is checked
 // (relative residual) and the two backends' solutions compared.
@@ -66,21 +67,23 @@ std::vector<int> parseList(const char* text) {
 int main(int argc, char** argv) {
   std::vector<int> threads{1, 2}, sizes;
   int dgemmSize = 2000;
-  std::string renum = "METIS";
+  std::string cholmodRenum = "METIS", mumpsRenum = "AUTO";
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--threads") == 0 && i + 1 < argc) {
       threads = parseList(argv[++i]);
     } else if (std::strcmp(argv[i], "--dgemm") == 0 && i + 1 < argc) {
       dgemmSize = std::stoi(argv[++i]);
-    } else if (std::strcmp(argv[i], "--renum") == 0 && i + 1 < argc) {
-      renum = argv[++i];
+    } else if (std::strcmp(argv[i], "--cholmod") == 0 && i + 1 < argc) {
+      cholmodRenum = argv[++i];
+    } else if (std::strcmp(argv[i], "--mumps") == 0 && i + 1 < argc) {
+      mumpsRenum = argv[++i];
     } else {
       sizes.push_back(std::stoi(argv[i]));
     }
   }
   if (sizes.empty()) {
     std::fprintf(stderr,
-                 "usage: stella-bench-factor-rate [--threads 1,2] [--dgemm N] [--renum R] DIVISIONS...\n");
+                 "usage: stella-bench-factor-rate [--threads 1,2] [--dgemm N] [--cholmod R] [--mumps R] DIVISIONS...\n");
     return 2;
   }
   std::printf("blas=\"%s\"\n", linalg::blasDescription().c_str());
@@ -100,7 +103,7 @@ int main(int argc, char** argv) {
       for (auto method : {linalg::SolverMethod::MultFront, linalg::SolverMethod::Mumps}) {
         linalg::SolverOptions o;
         o.method = method;
-        o.renumbering = renum;
+        o.renumbering = method == linalg::SolverMethod::Mumps ? mumpsRenum : cholmodRenum;
         auto solver = linalg::makeLinearSolver(o, linalg::MatrixKind::SymmetricPositiveDefinite);
         auto t0 = std::chrono::steady_clock::now();
         solver->analyse(cube.k);
