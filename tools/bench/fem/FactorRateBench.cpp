@@ -82,8 +82,8 @@ int main(int argc, char** argv) {
     }
   }
   if (sizes.empty()) {
-    std::fprintf(stderr,
-                 "usage: stella-bench-factor-rate [--threads 1,2] [--dgemm N] [--cholmod R] [--mumps R] DIVISIONS...\n");
+    std::fprintf(stderr, "usage: stella-bench-factor-rate [--threads 1,2] [--dgemm N] [--cholmod R] [--mumps "
+                         "R] DIVISIONS...\n");
     return 2;
   }
   std::printf("blas=\"%s\"\n", linalg::blasDescription().c_str());
