@@ -139,7 +139,7 @@ TEST(StatNonLine, DefaultedFactorsAndRuleDefaults) {
       "                    CONVERGENCE=_F(RESI_GLOB_MAXI=1.e-5), SOLVEUR=_F(METHODE='MULT_FRONT'))\n");
   ASSERT_TRUE(valid(*maxi));
   EXPECT_FALSE(maxi->last().keywords.occurrences("CONVERGENCE")[0].has("RESI_GLOB_RELA"));
-  EXPECT_EQ(maxi->last().keywords.occurrences("SOLVEUR")[0].text("RENUM"), "MDA");
+  EXPECT_EQ(maxi->last().keywords.occurrences("SOLVEUR")[0].text("RENUM"), "METIS"); // code_aster's default
 }
 
 TEST(StatNonLine, InvalidCalls) {

@@ -6,6 +6,7 @@
 #include "TeeStream.hpp"
 #include "catalog/Catalog.hpp"
 #include "interpreter/Interpreter.hpp"
+#include "solver/linalg/BlasThreads.hpp"
 #include "solver/session/ExceptionDiagnostic.hpp"
 #include "solver/session/MemoryLimit.hpp"
 #include "solver/session/Session.hpp"
@@ -433,6 +434,7 @@ JobResult runInWork(const JobSpec& spec, const RunOptions& options, const fs::pa
                           "address space of {:.0f} MiB at start\n",
                           spec.memoryLimit, memoryLimit.footprint());
     }
+    mess << linalg::applyBlasThreads(spec.cpus); // P ncpus or STELLA_BLAS_THREADS
     session = runStudy(spec, work, mess, resuFile, sessionOptions, options, missing);
   }
   armTimeLimit(0); // the copy-back is not stopped

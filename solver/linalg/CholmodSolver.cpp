@@ -2,6 +2,7 @@
 // The pattern's upper rows are the lower columns of a CSC matrix (stype = -1).
 
 #include "solver/linalg/Backends.hpp"
+#include "solver/linalg/Ordering.hpp"
 
 #include <cholmod.h>
 
@@ -19,14 +20,16 @@ public:
     common_.final_ll = 1;
     common_.print = 0;
     common_.error_handler = nullptr;
-    if (o.renumbering == "METIS") {
+    // RENUM (SOLVEUR.cata): METIS nested dissection; MDA (MULT_FRONT) or AMD: approximate minimum
+    // degree; RCMK (LDLT): reverse Cuthill-McKee given as the permutation; AUTO: CHOLMOD's choice
+    // (AMD, then METIS when AMD's fill is large).
+    const std::string& r = o.renumbering;
+    if (r == "METIS" || r == "MDA" || r == "AMD" || r == "RCMK") {
       common_.nmethods = 1;
-      common_.method[0].ordering = CHOLMOD_METIS;
+      common_.method[0].ordering = r == "METIS" ? CHOLMOD_METIS : r == "RCMK" ? CHOLMOD_GIVEN : CHOLMOD_AMD;
       common_.postorder = 1;
-    } else if (o.renumbering == "AMD") {
-      common_.nmethods = 1;
-      common_.method[0].ordering = CHOLMOD_AMD;
-      common_.postorder = 1;
+    } else if (r != "AUTO") {
+      throw LinearSolverError("CHOLMOD: RENUM='" + r + "' is not available (METIS, MDA, AMD, RCMK or AUTO)");
     }
   }
   ~CholmodSolver() override {
@@ -39,6 +42,26 @@ public:
   CholmodSolver& operator=(const CholmodSolver&) = delete;
 
   std::string_view backendName() const override { return "CHOLMOD"; }
+  double factorisationFlops() const override { return factorised_ ? common_.fl : 0.0; }
+  std::string orderingUsed() const override {
+    if (factor_ == nullptr) {
+      return "none";
+    }
+    switch (factor_->ordering) {
+    case CHOLMOD_NATURAL:
+      return "NATURAL";
+    case CHOLMOD_GIVEN:
+      return "GIVEN";
+    case CHOLMOD_AMD:
+      return "AMD";
+    case CHOLMOD_METIS:
+      return "METIS";
+    case CHOLMOD_NESDIS:
+      return "NESDIS";
+    default:
+      return "other";
+    }
+  }
 
   void analyse(const SparseMatrix& a) override {
     if (a.storage() != Storage::Upper) {
@@ -53,7 +76,12 @@ public:
     if (factor_ != nullptr) {
       cholmod_free_factor(&factor_, &common_);
     }
-    factor_ = cholmod_analyze(&matrix_, &common_);
+    if (options_.renumbering == "RCMK") {
+      std::vector<int> order = reverseCuthillMcKee(p);
+      factor_ = cholmod_analyze_p(&matrix_, order.data(), nullptr, 0, &common_);
+    } else {
+      factor_ = cholmod_analyze(&matrix_, &common_);
+    }
     if (factor_ == nullptr || common_.status < CHOLMOD_OK) {
       throw LinearSolverError("CHOLMOD: analysis failed (status " + std::to_string(common_.status) + ")");
     }
@@ -67,6 +95,7 @@ public:
       throw SingularMatrixError("CHOLMOD",
                                 perm != nullptr ? perm[factor_->minor] : static_cast<int>(factor_->minor));
     }
+    factorised_ = common_.status >= CHOLMOD_OK;
     if (common_.status < CHOLMOD_OK) {
       throw LinearSolverError("CHOLMOD: factorisation failed (status " + std::to_string(common_.status) +
                               ")");
@@ -138,6 +167,7 @@ private:
   cholmod_sparse matrix_{};
   cholmod_factor* factor_ = nullptr;
   std::vector<int> rowStart_;
+  bool factorised_ = false;
 };
 
 } // namespace

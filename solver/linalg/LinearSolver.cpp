@@ -40,6 +40,9 @@ std::unique_ptr<LinearSolver> makeLinearSolver(const SolverOptions& options, Mat
       throw LinearSolverError("GCPC needs a symmetric positive definite matrix: eliminate the "
                               "constraints (AFFE_CHAR_CINE) instead of dualising them, or use MUMPS");
     }
+    if (options.preconditioner == "LDLT_SP") {
+      return detail::makeSinglePrecisionPcg(options);
+    }
     return detail::makeConjugateGradient(options);
   case SolverMethod::Petsc:
     break;

@@ -11,8 +11,9 @@
 //   MULT_FRONT, LDLT (SuiteSparse)  CHOLMOD supernodal LL^T when symmetric positive definite;
 //               UMFPACK LU when symmetric indefinite (dualised Lagrange multipliers make the
 //               matrix indefinite; an LDL^T without pivoting can meet a zero pivot) or unsymmetric.
-//   GCPC        Eigen conjugate gradient with an incomplete Cholesky preconditioner, symmetric
-//               positive definite only (constraints must be eliminated, AFFE_CHAR_CINE).
+//   GCPC        conjugate gradient, symmetric positive definite only (constraints must be
+//               eliminated, AFFE_CHAR_CINE): PRE_COND='LDLT_INC' Eigen's with an incomplete
+//               Cholesky; 'LDLT_SP' preconditioned by a single-precision MUMPS factorisation.
 // A singular matrix raises SingularMatrixError with the equation number of the null pivot.
 
 #include "solver/linalg/SparseMatrix.hpp"
@@ -33,12 +34,14 @@ std::optional<SolverMethod> solverMethodFromName(std::string_view name); // 'MUM
 
 struct SolverOptions {
   SolverMethod method = SolverMethod::Mumps;
-  double pivotPercent = 20.0;       // PCENT_PIVOT
-  std::string renumbering = "AUTO"; // RENUM: AUTO, AMD, AMF, PORD, METIS, QAMD, SCOTCH
-  int nprec = 8;                    // NPREC: a pivot below 10^-NPREC (relative) is null
-  bool stopIfSingular = true;       // STOP_SINGULIER
-  double relativeResidual = 1e-6;   // RESI_RELA (GCPC)
-  int maxIterations = 0;            // NMAX_ITER (GCPC); 0: the system size
+  double pivotPercent = 20.0;              // PCENT_PIVOT
+  std::string renumbering = "AUTO";        // RENUM: AUTO, AMD, AMF, PORD, METIS, QAMD, SCOTCH
+  int nprec = 8;                           // NPREC: a pivot below 10^-NPREC (relative) is null
+  bool stopIfSingular = true;              // STOP_SINGULIER
+  double relativeResidual = 1e-6;          // RESI_RELA (GCPC)
+  int maxIterations = 0;                   // NMAX_ITER (GCPC); 0: the system size
+  std::string preconditioner = "LDLT_INC"; // PRE_COND (GCPC): LDLT_INC or LDLT_SP
+  int preconditionerReuseIterations = 30;  // REAC_PRECOND (LDLT_SP): rebuilt after a solve needing more
 };
 
 // The matrix is singular: `equation` is the null pivot's equation (-1 if the backend could not
@@ -79,6 +82,13 @@ public:
   // matrix's largest term divided by `ratio` (else a penalty 1e7 times the stiffness makes the
   // structure's own pivots look null at NPREC = 8).
   void setPenaltyRatio(double ratio) { penaltyRatio_ = ratio > 1.0 ? ratio : 1.0; }
+  // Floating-point operations of the last factorisation as the backend counts them (CHOLMOD:
+  // cholmod_common::fl of the analysis, exact for LL^T; MUMPS: RINFOG(3); UMFPACK: its
+  // UMFPACK_FLOPS), 0 before any factorisation. Divided by the factorisation's time it gives
+  // the achieved rate that doc/bench/factor-rate.md compares with dgemm's.
+  virtual double factorisationFlops() const = 0;
+  // The fill-reducing ordering the last analysis used, named as RENUM names it (AMD, METIS...).
+  virtual std::string orderingUsed() const = 0;
 
 protected:
   explicit LinearSolver(MatrixKind k) : kind_(k) {}

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <new>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace stella::linalg::detail {
@@ -15,31 +16,46 @@ namespace {
 constexpr int jobInit = -1, jobEnd = -2, jobAnalyse = 1, jobFactorise = 2, jobSolve = 3;
 constexpr int useCommWorld = -987654; // MUMPS's code for the (sequential) world communicator
 
+// RENUM -> ICNTL(7). Debian 12's sequential MUMPS has no METIS (it falls back to its automatic
+// choice: INFOG(7) tells), so the catalogue refuses RENUM='METIS' for MUMPS; PARMETIS and
+// PTSCOTCH are parallel orderings (refused there too).
 int orderingCode(const std::string& renum) {
-  if (renum == "AMD") {
-    return 0;
+  static const std::pair<const char*, int> codes[] = {{"AMD", 0},   {"AMF", 2},  {"SCOTCH", 3}, {"PORD", 4},
+                                                      {"METIS", 5}, {"QAMD", 6}, {"AUTO", 7}};
+  for (const auto& [name, code] : codes) {
+    if (renum == name) {
+      return code;
+    }
   }
-  if (renum == "AMF") {
-    return 2;
+  throw LinearSolverError("MUMPS: RENUM='" + renum +
+                          "' is not available (AMD, AMF, SCOTCH, PORD, QAMD or AUTO)");
+}
+
+std::string orderingName(int code) {
+  switch (code) {
+  case 0:
+    return "AMD";
+  case 1:
+    return "USER";
+  case 2:
+    return "AMF";
+  case 3:
+    return "SCOTCH";
+  case 4:
+    return "PORD";
+  case 5:
+    return "METIS";
+  case 6:
+    return "QAMD";
+  default:
+    return "none";
   }
-  if (renum == "SCOTCH") {
-    return 3;
-  }
-  if (renum == "PORD") {
-    return 4;
-  }
-  if (renum == "METIS") {
-    return 5;
-  }
-  if (renum == "QAMD") {
-    return 6;
-  }
-  return 7; // AUTO
 }
 
 class MumpsSolver final : public LinearSolver {
 public:
   MumpsSolver(const SolverOptions& o, MatrixKind k) : LinearSolver(k), options_(o) {
+    const int ordering = orderingCode(o.renumbering); // before the instance exists: may throw
     id_ = {};
     id_.comm_fortran = useCommWorld;
     id_.par = 1;
@@ -56,7 +72,7 @@ public:
     id_.icntl[1] = -1;
     id_.icntl[2] = -1;
     id_.icntl[3] = 0;
-    id_.icntl[6] = orderingCode(o.renumbering);                    // ICNTL(7)
+    id_.icntl[6] = ordering;                                       // ICNTL(7)
     id_.icntl[13] = static_cast<int>(std::lround(o.pivotPercent)); // ICNTL(14)
     // ICNTL(24): null pivot detection, with the relative threshold CNTL(3) = 10^-NPREC; a
     // negative NPREC turns it off (code_aster's convention): MUMPS then only fails on a pivot
@@ -75,6 +91,8 @@ public:
   MumpsSolver& operator=(const MumpsSolver&) = delete;
 
   std::string_view backendName() const override { return "MUMPS"; }
+  double factorisationFlops() const override { return factorised_ ? id_.rinfog[2] : 0.0; } // RINFOG(3)
+  std::string orderingUsed() const override { return orderingName(id_.infog[6]); }         // INFOG(7)
 
   void analyse(const SparseMatrix& a) override {
     if (a.storage() != storageFor(kind())) {
@@ -124,6 +142,7 @@ public:
       throw SingularMatrixError("MUMPS", -1);
     }
     check("factorisation");
+    factorised_ = true;
     if (options_.stopIfSingular && id_.infog[27] > 0) { // INFOG(28): null pivots found
       throw SingularMatrixError("MUMPS", id_.pivnul_list != nullptr ? id_.pivnul_list[0] - 1 : -1);
     }
@@ -210,6 +229,7 @@ private:
   SolverOptions options_;
   DMUMPS_STRUC_C id_;
   bool initialised_ = false;
+  bool factorised_ = false;
   std::vector<MUMPS_INT> irn_, jcn_;
 };
 

@@ -3,6 +3,7 @@
 // with UMFPACK_At. Upper-triangle storage is expanded to full once, at analysis.
 
 #include "solver/linalg/Backends.hpp"
+#include "solver/linalg/Ordering.hpp"
 
 #include <umfpack.h>
 
@@ -18,10 +19,16 @@ public:
     if (k == MatrixKind::SymmetricIndefinite) {
       control_[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_SYMMETRIC;
     }
-    if (o.renumbering == "METIS") {
+    // RENUM as for CHOLMOD (CholmodSolver.cpp): METIS, MDA/AMD, RCMK given, AUTO UMFPACK's choice
+    const std::string& r = o.renumbering;
+    if (r == "METIS") {
       control_[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
-    } else if (o.renumbering == "AMD") {
+    } else if (r == "MDA" || r == "AMD") {
       control_[UMFPACK_ORDERING] = UMFPACK_ORDERING_AMD;
+    } else if (r == "RCMK") {
+      control_[UMFPACK_ORDERING] = UMFPACK_ORDERING_GIVEN;
+    } else if (r != "AUTO") {
+      throw LinearSolverError("UMFPACK: RENUM='" + r + "' is not available (METIS, MDA, AMD, RCMK or AUTO)");
     }
   }
   ~UmfpackSolver() override { release(); }
@@ -29,6 +36,17 @@ public:
   UmfpackSolver& operator=(const UmfpackSolver&) = delete;
 
   std::string_view backendName() const override { return "UMFPACK"; }
+  double factorisationFlops() const override { return numeric_ != nullptr ? info_[UMFPACK_FLOPS] : 0.0; }
+  std::string orderingUsed() const override {
+    if (symbolic_ == nullptr) {
+      return "none";
+    }
+    const auto used = static_cast<int>(info_[UMFPACK_ORDERING_USED]);
+    return used == UMFPACK_ORDERING_AMD     ? "AMD"
+           : used == UMFPACK_ORDERING_METIS ? "METIS"
+           : used == UMFPACK_ORDERING_GIVEN ? "GIVEN"
+                                            : "other";
+  }
 
   void analyse(const SparseMatrix& a) override {
     release();
@@ -42,8 +60,13 @@ public:
       expand(p);
     }
     values_.assign(index_.size(), 0.0);
+    std::vector<int> order;
+    if (options_.renumbering == "RCMK") {
+      order = reverseCuthillMcKee(p);
+    }
     const int status =
-        umfpack_di_symbolic(n_, n_, start_.data(), index_.data(), nullptr, &symbolic_, control_, info_);
+        umfpack_di_qsymbolic(n_, n_, start_.data(), index_.data(), nullptr,
+                             order.empty() ? nullptr : order.data(), &symbolic_, control_, info_);
     if (status != UMFPACK_OK) {
       throw LinearSolverError("UMFPACK: analysis failed (status " + std::to_string(status) + ")");
     }

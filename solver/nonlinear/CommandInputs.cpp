@@ -95,6 +95,12 @@ linalg::SolverOptions readSolverOptions(const KeywordTree& keywords) {
   if (s.has("NMAX_ITER")) {
     o.maxIterations = static_cast<int>(s.integer("NMAX_ITER"));
   }
+  if (s.has("PRE_COND")) { // GCPC
+    o.preconditioner = s.text("PRE_COND");
+  }
+  if (s.has("REAC_PRECOND")) { // GCPC, LDLT_SP
+    o.preconditionerReuseIterations = static_cast<int>(s.integer("REAC_PRECOND"));
+  }
   return o;
 }
 

@@ -4,10 +4,13 @@
 #include "solver/job/BatchJob.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/linalg/BlasThreads.hpp"
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <iterator>
 
 namespace stella {
 namespace {
@@ -89,6 +92,28 @@ TEST_F(ExportTest, NcpusIsAWholeNumberOfThreads) {
       EXPECT_EQ(e.first().id, "EXPORT_10") << bad;
     }
   }
+}
+
+// P ncpus sets the BLAS threads of the job's factorisations (OpenBLAS pthread, tools/install-deps)
+// and the message file says so; the default (1) says nothing.
+TEST_F(ExportTest, NcpusSetsTheBlasThreads) {
+  if (linalg::blasDescription().find("SINGLE_THREADED") != std::string::npos ||
+      linalg::blasDescription().empty()) {
+    GTEST_SKIP() << "serial BLAS: " << linalg::blasDescription();
+  }
+  unsetenv("STELLA_BLAS_THREADS");
+  RunOptions options;
+  options.echo = false;
+  auto message = [&](const std::string& ncpus) {
+    runExport(Export::read(write(ncpus + "F comm study.comm D 1\nF mess study.mess R 6\n")), options);
+    std::ifstream in(dir_ / "study.mess");
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_NE(message("P ncpus 2\n").find("BLAS threads of the factorisations: 2 (P ncpus)"),
+            std::string::npos);
+  EXPECT_EQ(linalg::blasThreads(), 2);
+  EXPECT_EQ(message("").find("BLAS threads"), std::string::npos);
+  EXPECT_EQ(linalg::blasThreads(), 1);
 }
 
 TEST_F(ExportTest, MissingDataFileIsNotAnErrorAtRead) {

@@ -131,6 +131,34 @@ TEST(LinearSolver, SymmetricPositiveDefiniteEveryBackend) {
   }
 }
 
+// GCPC with PRE_COND='LDLT_SP': a conjugate gradient preconditioned by a single-precision MUMPS
+// factorisation reaches the dense solution to the relative residual asked; the refactorisation
+// of 2 K in expectSolves keeps the preconditioner of K (REAC_PRECOND: the first solves converged
+// in a few iterations) and still converges. With REAC_PRECOND = 1 it is rebuilt: same solutions.
+TEST(LinearSolver, GcpcWithSinglePrecisionPreconditioner) {
+  Problem p(false, false, Storage::Upper);
+  for (int i = 0; i < p.matrix.size(); ++i) {
+    p.matrix.add(i, i, 10.0);
+    p.dense(i, i) += 10.0;
+  }
+  for (int reuse : {30, 1}) {
+    SolverOptions o;
+    o.method = SolverMethod::Gcpc;
+    o.preconditioner = "LDLT_SP";
+    o.renumbering = "SANS";
+    o.relativeResidual = 1e-13;
+    o.preconditionerReuseIterations = reuse;
+    auto s = makeLinearSolver(o, MatrixKind::SymmetricPositiveDefinite);
+    EXPECT_EQ(s->backendName(), "GCPC (LDLT_SP)");
+    expectSolves(*s, p.matrix, p.dense, 1e-10);
+  }
+  SolverOptions metis;
+  metis.method = SolverMethod::Gcpc;
+  metis.preconditioner = "LDLT_SP";
+  metis.renumbering = "METIS";
+  EXPECT_THROW(makeLinearSolver(metis, MatrixKind::SymmetricPositiveDefinite), LinearSolverError);
+}
+
 TEST(LinearSolver, SaddlePointWithLagrangeMultipliers) {
   Problem p(true, false, Storage::Upper);
   for (SolverMethod m : {SolverMethod::Mumps, SolverMethod::MultFront, SolverMethod::Ldlt}) {

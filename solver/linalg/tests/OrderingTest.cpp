@@ -1,0 +1,208 @@
+// SOLVEUR RENUM: every ordering each backend offers gives the same solution (to 1e-10) on a 3D
+// elastic cube, the backend reports using the ordering asked (Debian's sequential MUMPS has no
+// METIS: it would silently take another, hence the catalogue refuses it); the reverse
+// Cuthill-McKee ordering of RENUM='RCMK'; the BLAS thread count (STELLA_BLAS_THREADS, P ncpus).
+
+#include "solver/linalg/Ordering.hpp"
+#include "solver/behaviour/Elasticity.hpp"
+#include "solver/fem/BoxMesh.hpp"
+#include "solver/fem/ElementMatrices.hpp"
+#include "solver/linalg/BlasThreads.hpp"
+#include "solver/linalg/LinearSolver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <numeric>
+#include <random>
+
+namespace stella::linalg {
+namespace {
+
+// HEXA8 cube 4 x 3 x 3, face x = 0 clamped (by elimination, or by Lagrange multipliers), a
+// load in y and z on x = 1.
+struct Cube {
+  fem::PlainMesh mesh = fem::boxMesh(CellType::HEXA8, {4, 3, 3}, {1.0, 0.8, 0.6});
+  std::vector<std::int64_t> offsets;
+  DofNumbering numbering{mesh.nodeCount(), 3};
+  SparseMatrix k;
+  Eigen::VectorXd f;
+
+  explicit Cube(bool lagrange) {
+    for (int c = 0; c <= mesh.cellCount(); ++c) {
+      offsets.push_back(static_cast<std::int64_t>(c) * mesh.nodesPerCell());
+    }
+    std::vector<std::pair<int, int>> couplings;
+    std::vector<int> blocked;
+    for (int a = 0; a < mesh.nodeCount(); ++a) {
+      for (int c = 0; c < 3 && mesh.coordinates(a, 0) < 1e-12; ++c) {
+        if (lagrange) {
+          couplings.emplace_back(numbering.addLagrange(Component::LAGR, a, static_cast<Component>(c)),
+                                 numbering.dof(a, c));
+        } else {
+          blocked.push_back(numbering.dof(a, c));
+        }
+      }
+    }
+    const CellList cells{mesh.connectivity, offsets};
+    auto pattern = buildPattern(numbering, cells, couplings, Storage::Upper);
+    k = SparseMatrix(pattern);
+    const ElementScatter scatter(*pattern, numbering, cells);
+    const Eigen::MatrixXd d = behaviour::elasticMatrix(fem::Modelling::ThreeD, {210000.0, 0.3});
+    fem::ElementKinematics kin;
+    Eigen::MatrixXd ke, x(8, 3);
+    for (int e = 0; e < mesh.cellCount(); ++e) {
+      for (int a = 0; a < 8; ++a) {
+        x.row(a) = mesh.coordinates.row(mesh.cell(e)[a]);
+      }
+      fem::computeKinematics(CellType::HEXA8, fem::Modelling::ThreeD, x, kin);
+      fem::stiffness(kin, d, ke);
+      scatter.add(e, ke, k.values());
+    }
+    for (const auto& [l, dof] : couplings) {
+      k.add(std::min(l, dof), std::max(l, dof), 1.0);
+    }
+    for (int b : blocked) {
+      for (int i = 0; i < pattern->size; ++i) {
+        for (auto p = pattern->rowStart[static_cast<std::size_t>(i)];
+             p < pattern->rowStart[static_cast<std::size_t>(i) + 1]; ++p) {
+          const int j = pattern->columns[static_cast<std::size_t>(p)];
+          if (i == b || j == b) {
+            k.values()[static_cast<std::size_t>(p)] = i == j ? 1.0 : 0.0;
+          }
+        }
+      }
+    }
+    f = Eigen::VectorXd::Zero(numbering.dofCount());
+    for (int a = 0; a < mesh.nodeCount(); ++a) {
+      if (mesh.coordinates(a, 0) > 1.0 - 1e-12) {
+        f[numbering.dof(a, 1)] = 100.0;
+        f[numbering.dof(a, 2)] = -50.0;
+      }
+    }
+  }
+};
+
+struct Case {
+  SolverMethod method;
+  const char* renum;
+  const char* used; // the ordering the backend must report
+};
+
+Eigen::VectorXd solveWith(const Case& c, MatrixKind kind, const Cube& cube) {
+  SolverOptions o;
+  o.method = c.method;
+  o.renumbering = c.renum;
+  o.relativeResidual = 1e-14;
+  auto s = makeLinearSolver(o, kind);
+  s->analyse(cube.k);
+  s->factorise(cube.k);
+  Eigen::VectorXd u = cube.f;
+  s->solve(u);
+  if (c.method != SolverMethod::Gcpc) {
+    EXPECT_EQ(s->orderingUsed(), c.used) << s->backendName() << " RENUM=" << c.renum;
+    EXPECT_GT(s->factorisationFlops(), 0.0) << s->backendName();
+  }
+  return u;
+}
+
+// The catalogue's implemente= lists of RENUM (SOLVEUR.cata), backend by backend.
+TEST(Renumbering, EveryOrderingGivesTheSameSolutionOnAnSpdCube) {
+  const Cube cube(false);
+  const Case cases[] = {{SolverMethod::Mumps, "AMD", "AMD"},
+                        {SolverMethod::Mumps, "AMF", "AMF"},
+                        {SolverMethod::Mumps, "PORD", "PORD"},
+                        {SolverMethod::Mumps, "QAMD", "QAMD"},
+                        {SolverMethod::Mumps, "SCOTCH", "SCOTCH"},
+                        {SolverMethod::MultFront, "MDA", "AMD"},
+                        {SolverMethod::MultFront, "METIS", "METIS"},
+                        {SolverMethod::Ldlt, "RCMK", "GIVEN"},
+                        {SolverMethod::Gcpc, "RCMK", ""}};
+  const Eigen::VectorXd reference = solveWith(cases[6], MatrixKind::SymmetricPositiveDefinite, cube);
+  ASSERT_GT(reference.norm(), 0.0);
+  for (const Case& c : cases) {
+    const Eigen::VectorXd u = solveWith(c, MatrixKind::SymmetricPositiveDefinite, cube);
+    EXPECT_LT((u - reference).norm(), 1e-10 * reference.norm()) << c.renum;
+  }
+}
+
+TEST(Renumbering, EveryOrderingGivesTheSameSolutionWithLagrangeMultipliers) {
+  const Cube cube(true);
+  const Case cases[] = {{SolverMethod::Mumps, "AMD", "AMD"},         {SolverMethod::Mumps, "AMF", "AMF"},
+                        {SolverMethod::Mumps, "PORD", "PORD"},       {SolverMethod::Mumps, "QAMD", "QAMD"},
+                        {SolverMethod::Mumps, "SCOTCH", "SCOTCH"},   {SolverMethod::MultFront, "MDA", "AMD"},
+                        {SolverMethod::MultFront, "METIS", "METIS"}, {SolverMethod::Ldlt, "RCMK", "GIVEN"}};
+  const Eigen::VectorXd reference = solveWith(cases[0], MatrixKind::SymmetricIndefinite, cube);
+  for (const Case& c : cases) {
+    const Eigen::VectorXd u = solveWith(c, MatrixKind::SymmetricIndefinite, cube);
+    EXPECT_LT((u - reference).norm(), 1e-10 * reference.norm()) << c.renum;
+  }
+}
+
+// What the libraries do not provide is refused by the backend too (the catalogue refuses it first).
+TEST(Renumbering, UnknownOrderingsAreRefused) {
+  for (auto [method, renum] : {std::pair{SolverMethod::Mumps, "PARMETIS"}, {SolverMethod::MultFront, "MD"}}) {
+    SolverOptions o;
+    o.method = method;
+    o.renumbering = renum;
+    EXPECT_THROW(makeLinearSolver(o, MatrixKind::SymmetricPositiveDefinite), LinearSolverError) << renum;
+  }
+}
+
+// A 40 x 3 strip numbered along its length has a bandwidth of about 2 x 41 DOFs; reverse
+// Cuthill-McKee, after any shuffle, numbers it across: a level holds at most 4 nodes (2 DOFs
+// each), an entry spans two levels, so the bandwidth is below 2 x 4 x 2 = 16.
+TEST(Renumbering, ReverseCuthillMcKeeNumbersAStripAcross) {
+  const fem::PlainMesh mesh = fem::boxMesh(CellType::QUAD4, {40, 3, 1}, {40.0, 3.0, 1.0});
+  std::vector<int> shuffle(static_cast<std::size_t>(mesh.nodeCount()));
+  std::iota(shuffle.begin(), shuffle.end(), 0);
+  std::shuffle(shuffle.begin(), shuffle.end(), std::mt19937(7));
+  std::vector<int> connectivity = mesh.connectivity;
+  for (int& node : connectivity) {
+    node = shuffle[static_cast<std::size_t>(node)];
+  }
+  std::vector<std::int64_t> offsets;
+  for (int c = 0; c <= mesh.cellCount(); ++c) {
+    offsets.push_back(4LL * c);
+  }
+  const DofNumbering numbering(mesh.nodeCount(), 2);
+  const auto pattern = buildPattern(numbering, CellList{connectivity, offsets}, {}, Storage::Upper);
+  std::vector<int> natural(static_cast<std::size_t>(pattern->size));
+  std::iota(natural.begin(), natural.end(), 0);
+  const std::vector<int> order = reverseCuthillMcKee(*pattern);
+  std::vector<int> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_EQ(sorted, natural); // a permutation
+  EXPECT_LE(bandwidth(*pattern, order), 16);
+  EXPECT_GT(bandwidth(*pattern, natural), 40); // the shuffle made it wide
+}
+
+TEST(BlasThreads, EnvironmentVariableThenExportCount) {
+  unsetenv("STELLA_BLAS_THREADS");
+  EXPECT_FALSE(blasThreadsFromEnvironment().has_value());
+  EXPECT_EQ(blasThreadsFor(2), 2);
+  EXPECT_EQ(applyBlasThreads(1), ""); // the default says nothing
+  setenv("STELLA_BLAS_THREADS", "3", 1);
+  EXPECT_EQ(blasThreadsFor(2), 3);
+  for (const char* bad : {"0", "x", "2.5", "", "2000"}) {
+    setenv("STELLA_BLAS_THREADS", bad, 1);
+    EXPECT_THROW(blasThreadsFromEnvironment(), std::invalid_argument) << bad;
+    EXPECT_NE(applyBlasThreads(1).find("not a whole number"), std::string::npos) << bad;
+  }
+  unsetenv("STELLA_BLAS_THREADS");
+  setBlasThreads(1);
+}
+
+// With OpenBLAS's pthread variant (tools/install-deps) the count is set at run time.
+TEST(BlasThreads, OpenBlasPthreadTakesTheCount) {
+  if (blasDescription().find("SINGLE_THREADED") != std::string::npos || blasDescription().empty()) {
+    GTEST_SKIP() << "serial BLAS: " << blasDescription();
+  }
+  EXPECT_EQ(setBlasThreads(2), 2);
+  EXPECT_NE(applyBlasThreads(2).find("BLAS threads of the factorisations: 2 (P ncpus)"), std::string::npos);
+  EXPECT_EQ(setBlasThreads(1), 1);
+}
+
+} // namespace
+} // namespace stella::linalg
