@@ -202,8 +202,8 @@ void ContinuousContactConstraint::correctWithLinearisedStatus(const Eigen::Vecto
       continue; // its status and force stay as assembled
     }
     d.was[r] = assembled[k] != 0 ? 1 : 0;
-    // a node frozen by CYCLAGE, or of zero weight, keeps its status
-    d.resolved[r] = weight_(i) > 0.0 && !(k < frozen_.size() && frozen_[k] >= 0) ? 1 : 0;
+    // a node frozen by CYCLAGE, held closed by GLISSIERE, or of zero weight keeps its status
+    d.resolved[r] = weight_(i) > 0.0 && !(k < frozen_.size() && frozen_[k] >= 0) && !heldClosed(k) ? 1 : 0;
   }
   SchurColumns columns(a, ddu.size());
   const auto unknownsOf = [&](Trial& t) {
