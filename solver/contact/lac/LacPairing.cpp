@@ -3,6 +3,7 @@
 #include "solver/contact/lac/LacPairing.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -42,12 +43,13 @@ double measure(const Segment& s, double xi, bool axisymmetric) {
   return axisymmetric ? j * mortar::segmentPoint(s, xi)[0] : j;
 }
 
-Box3 boxOf(const Segment& s, double margin) {
-  std::vector<Point3> p;
-  for (const auto& x : s.nodes) {
-    p.push_back({x[0], x[1], 0.0});
+// The box of the search (mortar::slaveBox: the segment in the plane z = 0) inflated by `margin`.
+Box3 boxOf(const Segment& s, const mortar::SearchMargin& margin) {
+  std::array<Point3, 3> p{};
+  for (std::size_t i = 0; i < s.nodes.size(); ++i) {
+    p[i] = {s.nodes[i][0], s.nodes[i][1], 0.0};
   }
-  return cellBox(s.type, p.data(), static_cast<int>(p.size()), margin);
+  return mortar::slaveBox(s.type, p.data(), static_cast<int>(s.nodes.size()), margin);
 }
 
 void addGradient(std::map<int, double>& g, const DofMap& dofs, NodeId n, const Point2& v, double f) {
@@ -63,23 +65,24 @@ void pairZone(const Mesh& mesh, const LacZoneCells& zone, const std::vector<doub
               const LacPairingOptions& options, std::vector<LacPatchRow>& rows,
               std::vector<std::map<int, double>>& gradients) {
   std::vector<Segment> masters;
-  std::vector<Box3> boxes;
+  std::vector<Box3> masterBoxes;
   for (CellId c : zone.masters) {
     masters.push_back(segmentOf(mesh, c, &u));
-    boxes.push_back(boxOf(masters.back(), 0.0));
+    masterBoxes.push_back(boxOf(masters.back(), {0.0, 0.0}));
   }
-  MasterCellIndex index;
-  if (!zone.bruteForce) {
-    index.build(boxes);
+  const double moved = largestZoneDisplacement(mesh, zone, u);
+  std::vector<Box3> slaveBoxes;
+  for (const LacSlaveCell& sc : zone.slaves) {
+    const Segment current = segmentOf(mesh, sc.cell, &u);
+    const double h =
+        norm2({current.nodes[1][0] - current.nodes[0][0], current.nodes[1][1] - current.nodes[0][1]});
+    slaveBoxes.push_back(boxOf(current, lacMargin(h, moved)));
   }
-  std::vector<int> all(masters.size());
-  for (std::size_t k = 0; k < all.size(); ++k) {
-    all[k] = static_cast<int>(k);
-  }
+  const mortar::Candidates candidates = lacCandidates(slaveBoxes, masterBoxes, zone.bruteForce);
   mortar::SegmentOptions segmentOptions;
   segmentOptions.gaussPoints = options.gaussPoints;
-  std::vector<int> candidates;
-  for (const LacSlaveCell& sc : zone.slaves) {
+  for (std::size_t k = 0; k < zone.slaves.size(); ++k) {
+    const LacSlaveCell& sc = zone.slaves[k];
     const Segment current = segmentOf(mesh, sc.cell, &u);
     const Segment initial = segmentOf(mesh, sc.cell, nullptr);
     const Segment& jacobianOn = zone.currentJacobian ? current : initial;
@@ -89,15 +92,7 @@ void pairZone(const Mesh& mesh, const LacZoneCells& zone, const std::vector<doub
       const double w = xi == 0.0 ? 8.0 / 9 : 5.0 / 9;
       row.length += w * measure(jacobianOn, xi, options.axisymmetric);
     }
-    if (zone.bruteForce) {
-      candidates = all;
-    } else {
-      const double h =
-          norm2({current.nodes[1][0] - current.nodes[0][0], current.nodes[1][1] - current.nodes[0][1]});
-      index.query(boxOf(current, h), candidates);
-      std::sort(candidates.begin(), candidates.end());
-    }
-    const auto overlaps = mortar::intersectSegments(current, masters, candidates, segmentOptions);
+    const auto overlaps = mortar::intersectSegments(current, masters, candidates.of(k), segmentOptions);
     const auto slaveNodes = mesh.cellNodes(sc.cell);
     for (const auto& o : overlaps) {
       const Segment& m = masters[static_cast<std::size_t>(o.master)];
@@ -128,6 +123,40 @@ void pairZone(const Mesh& mesh, const LacZoneCells& zone, const std::vector<doub
 }
 
 } // namespace
+
+double largestZoneDisplacement(const Mesh& mesh, const LacZoneCells& zone, const std::vector<double>& u) {
+  double largest = 0.0;
+  const auto visit = [&](CellId c) {
+    for (NodeId n : mesh.cellNodes(c)) {
+      const auto i = static_cast<std::size_t>(n) * 3;
+      largest = std::max(largest, std::sqrt(u[i] * u[i] + u[i + 1] * u[i + 1] + u[i + 2] * u[i + 2]));
+    }
+  };
+  for (const LacSlaveCell& sc : zone.slaves) {
+    visit(sc.cell);
+  }
+  for (CellId c : zone.masters) {
+    visit(c);
+  }
+  return largest;
+}
+
+mortar::Candidates lacCandidates(std::span<const Box3> slaves, std::span<const Box3> masters,
+                                 bool bruteForce) {
+  if (!bruteForce) {
+    return mortar::findCandidates(slaves, masters);
+  }
+  mortar::Candidates all;
+  all.offsets.reserve(slaves.size() + 1);
+  all.masters.reserve(slaves.size() * masters.size());
+  for (std::size_t s = 0; s < slaves.size(); ++s) {
+    for (std::size_t m = 0; m < masters.size(); ++m) {
+      all.masters.push_back(static_cast<int>(m));
+    }
+    all.offsets.push_back(all.masters.size());
+  }
+  return all;
+}
 
 std::vector<LacPatchRow> pairLacPatches(const Mesh& mesh, const std::vector<LacZoneCells>& zones,
                                         const std::vector<double>& displacement, const DofMap& dofs,

@@ -2,8 +2,9 @@
 // Mortar pairing of LAC contact in 2D and 3D (3D: LacPairing3d.cpp) (DEFI_CONTACT ALGO_CONT='LAC',
 // APPARIEMENT='MORTAR', notice §2.3, §3.1.4): the slave cells (SEG2, SEG3) of each LAC patch
 // (Mesh::lacPatches(), made by CREA_MAILLAGE/DECOUPE_LAC) are intersected exactly with the master cells
-// (SEG2, SEG3) by the segment clipping of mortar/MortarSegments.hpp; candidates come from the R-tree of the
-// master cells' boxes (MasterCellIndex, TYPE_APPA='RAPIDE') or are every master cell ('ROBUSTE').
+// (SEG2, SEG3) by the segment clipping of mortar/MortarSegments.hpp; candidates come from the search of
+// mortar pairing (mortar::findCandidates, the R-tree of MasterCellIndex, TYPE_APPA='RAPIDE') or are every
+// master cell ('ROBUSTE'): see lacCandidates below for the margin.
 //
 // For each patch P, on the overlaps (Gauss points q with slave xi_s, master xi_m, weight w_q):
 //   g_q = n_s . (x_m(xi_m) - x_s(xi_s))       the gap along the slave's outward normal n_s
@@ -14,10 +15,12 @@
 // current one ('ACTUALISE'); the overlaps and the gaps are always those of the current positions.
 
 #include "solver/contact/MasterCellIndex.hpp"
+#include "solver/contact/mortar/MortarSearch.hpp"
 #include "solver/contact/mortar/MortarSegments.hpp"
 #include "solver/nonlinear/DofMap.hpp"
 
 #include <map>
+#include <span>
 #include <vector>
 
 namespace stella::contact::lac {
@@ -48,6 +51,29 @@ struct LacPairingOptions {
   bool axisymmetric = false;
   int gaussPoints = 3;
 };
+
+// The search margin of a LAC slave cell. The segment and polygon kernels send the slave normals to
+// the masters without a distance limit: the search is LAC's only distance cut-off. A master is
+// a candidate when its box (mortar::slaveBox with no margin: the vertices, the SEG3 curve) meets
+// the slave's box inflated by the absolute margin `size + 2 moved`: `size` the slave cell's size
+// (its chord in 2D, the diagonal of its box in 3D: the surfaces of a study start within about a
+// cell of each other), `moved` the largest displacement of the zone's nodes from the mesh
+// (largestZoneDisplacement). A slave point that was outside the master body in the mesh cannot be
+// deeper inside it than the two displacements |u_s| + |u_m| <= 2 moved (small rotations), so no
+// interpenetrated patch is left unpaired, even in a first Newton iterate that drives the bodies
+// into each other (the Hertz cases: 1 mm in one iterate, 4 slave cells). MortarSearch's default
+// (0.25 x the size, no displacement) would drop them.
+inline mortar::SearchMargin lacMargin(double size, double moved) {
+  return {size + 2.0 * moved, 0.0};
+}
+
+// The largest |u| over the nodes of the zone's slave and master cells (`u`: 3 per node).
+double largestZoneDisplacement(const Mesh& mesh, const LacZoneCells& zone, const std::vector<double>& u);
+
+// Candidate masters of every slave (boxes as above): mortar::findCandidates, or every master in
+// ascending order when `bruteForce` (TYPE_APPA='ROBUSTE', the reference RAPIDE must equal).
+mortar::Candidates lacCandidates(std::span<const Box3> slaves, std::span<const Box3> masters,
+                                 bool bruteForce);
 
 // One 3D zone (LacPairing3d.cpp): slave and master faces.
 void pairZone3d(const Mesh& mesh, const LacZoneCells& zone, const std::vector<double>& u, const DofMap& dofs,

@@ -96,42 +96,34 @@ void addGradient(std::map<int, double>& g, const DofMap& dofs, NodeId n, const P
 void pairZone3d(const Mesh& mesh, const LacZoneCells& zone, const std::vector<double>& u, const DofMap& dofs,
                 std::vector<LacPatchRow>& rows, std::vector<std::map<int, double>>& gradients) {
   std::vector<Face> masters;
-  std::vector<Box3> boxes;
+  std::vector<Box3> masterBoxes;
   for (CellId c : zone.masters) {
     masters.push_back(faceOf(mesh, c, &u));
-    boxes.push_back(cellBox(masters.back().type, masters.back().nodes.data(),
-                            static_cast<int>(masters.back().nodes.size()), 0.0));
+    const Face& m = masters.back();
+    masterBoxes.push_back(mortar::slaveBox(m.type, m.nodes.data(), static_cast<int>(m.nodes.size()),
+                                           mortar::SearchMargin{0.0, 0.0}));
   }
-  MasterCellIndex index;
-  if (!zone.bruteForce) {
-    index.build(boxes);
+  const double moved = largestZoneDisplacement(mesh, zone, u);
+  std::vector<Box3> slaveBoxes;
+  for (const LacSlaveCell& sc : zone.slaves) {
+    const Face f = faceOf(mesh, sc.cell, &u);
+    const Box3 own = cellBox(f.type, f.nodes.data(), static_cast<int>(f.nodes.size()), 0.0);
+    slaveBoxes.push_back(mortar::slaveBox(f.type, f.nodes.data(), static_cast<int>(f.nodes.size()),
+                                          lacMargin(norm(own.hi - own.lo), moved)));
   }
-  std::vector<int> all(masters.size());
-  for (std::size_t k = 0; k < all.size(); ++k) {
-    all[k] = static_cast<int>(k);
-  }
-  std::vector<int> candidates;
+  const mortar::Candidates candidates = lacCandidates(slaveBoxes, masterBoxes, zone.bruteForce);
   mortar::PolygonOptions polygonOptions;
   polygonOptions.degree = 5; // 7 points per triangle: the shape functions of a QUAD4 that is not a
                              // parallelogram are not polynomials of the position
-  for (const LacSlaveCell& sc : zone.slaves) {
+  for (std::size_t k = 0; k < zone.slaves.size(); ++k) {
+    const LacSlaveCell& sc = zone.slaves[k];
     const Face current = faceOf(mesh, sc.cell, &u);
     const Face initial = faceOf(mesh, sc.cell, nullptr);
     const Face& jacobianOn = zone.currentJacobian ? current : initial;
     LacPatchRow& row = rows[static_cast<std::size_t>(sc.patch)];
     row.length += faceArea(jacobianOn);
-    if (zone.bruteForce) {
-      candidates = all;
-    } else {
-      const Box3 own =
-          cellBox(current.type, current.nodes.data(), static_cast<int>(current.nodes.size()), 0.0);
-      const double h = norm(own.hi - own.lo);
-      index.query(cellBox(current.type, current.nodes.data(), static_cast<int>(current.nodes.size()), h),
-                  candidates);
-      std::sort(candidates.begin(), candidates.end());
-    }
     const Point3 n = outwardNormal(current, sc.sign);
-    const auto overlaps = mortar::intersectFaces(current, masters, candidates, polygonOptions);
+    const auto overlaps = mortar::intersectFaces(current, masters, candidates.of(k), polygonOptions);
     const auto slaveNodes = mesh.cellNodes(sc.cell);
     auto& grad = gradients[static_cast<std::size_t>(sc.patch)];
     for (const auto& o : overlaps) {

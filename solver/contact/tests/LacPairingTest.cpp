@@ -147,5 +147,43 @@ TEST(LacPairing, RapideEqualsRobuste) {
   }
 }
 
+// The search margin (lacMargin): with no displacement, a master is a candidate across a gap up to one
+// slave cell size (h = 0.25 here), not only the 0.25 h of mortar::SearchMargin's default; beyond it
+// RAPIDE leaves the patches unpaired while ROBUSTE (every master, no distance limit) still pairs them.
+TEST(LacPairing, RapideFindsMastersAcrossAGapUpToTheSlaveCellSize) {
+  Interface within(4, 1, 3, -0.1, 1.1, -0.24); // gap 0.24 < h = 0.25
+  const auto fast = within.pair(within.zero());
+  within.zone.bruteForce = true;
+  const auto all = within.pair(within.zero());
+  for (std::size_t p = 0; p < fast.size(); ++p) {
+    EXPECT_NEAR(fast[p].pairedLength, 0.25, 1e-14) << p;
+    EXPECT_NEAR(fast[p].integratedGap / fast[p].pairedLength, 0.24, 1e-14) << p;
+    EXPECT_DOUBLE_EQ(fast[p].integratedGap, all[p].integratedGap) << p;
+  }
+  Interface beyond(4, 1, 3, -0.1, 1.1, -0.26); // gap 0.26 > h
+  const auto far = beyond.pair(beyond.zero());
+  beyond.zone.bruteForce = true;
+  const auto farAll = beyond.pair(beyond.zero());
+  for (std::size_t p = 0; p < far.size(); ++p) {
+    EXPECT_EQ(far[p].pairedLength, 0.0) << p;
+    EXPECT_NEAR(farAll[p].pairedLength, 0.25, 1e-14) << p;
+  }
+}
+
+// A slave driven 0.5 (two cell sizes) into the master body by its displacement is still paired: the
+// margin adds twice the zone's largest displacement (a first Newton iterate into the other body).
+TEST(LacPairing, RapideFindsADeeplyInterpenetratedSlave) {
+  const Interface f(4, 1, 3, -0.1, 1.1, -0.1); // master 0.1 below the slave
+  auto u = f.zero();
+  for (NodeId n = 0; n <= 4; ++n) {
+    u[static_cast<std::size_t>(n) * 3 + 1] = -0.6; // slave moved to y = -0.6: 0.5 inside
+  }
+  const auto rows = f.pair(u);
+  for (const auto& r : rows) {
+    EXPECT_NEAR(r.pairedLength, 0.25, 1e-14);
+    EXPECT_NEAR(r.integratedGap / r.pairedLength, -0.5, 1e-14);
+  }
+}
+
 } // namespace
 } // namespace stella::contact::lac
