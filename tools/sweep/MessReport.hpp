@@ -39,4 +39,9 @@ double relativeError(double computed, double reference);
 
 MessReport parseMessage(const std::string& text);
 
+// The results file an external series' command writes ({out}, doc/sweep.md): one line per test,
+// `COMPUTED REFERENCE NAME` (two numbers, then the test's name, spaces allowed); blank lines and
+// lines starting with # are skipped. Throws SweepError naming the line of any other line.
+MessReport parseExternalResult(const std::string& text);
+
 } // namespace stella::sweep

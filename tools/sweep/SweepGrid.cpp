@@ -46,7 +46,7 @@ std::vector<RunPoint> expandGrid(const SweepSpec& spec) {
   const auto columns = parameterColumns(spec);
   std::vector<Series> series = spec.series;
   if (series.empty()) {
-    series.push_back(Series{"study", {}, 0});
+    series.push_back(Series{"study", {}, 0, {}});
   }
   std::size_t combinations = 1;
   for (const auto& p : spec.vary) {
@@ -129,7 +129,7 @@ std::string substituteBraces(const std::string& command, const std::vector<Setti
       const auto it =
           std::find_if(settings.begin(), settings.end(), [&](const Setting& s) { return s.first == name; });
       if (it == settings.end() || it->second.empty()) {
-        throw SweepError("the mesh command uses {" + name + "}, which is no parameter of this run");
+        throw SweepError("the command uses {" + name + "}, which is no parameter of this run");
       }
       out += unquoted(it->second);
       used.insert(name);

@@ -24,6 +24,7 @@ struct Point {
   std::filesystem::path directory;
   std::filesystem::path mesh; // empty: the export's own mesh
   std::string meshFailure;
+  std::string external; // an external series: its command, {out} still to replace per repeat
   std::vector<Repeat> repeats;
   bool failed() const { return !meshFailure.empty() || (!repeats.empty() && !repeats.front().finished); }
 };

@@ -92,8 +92,11 @@ private:
   void prepare();
   fs::path meshFor(const RunPoint& point, std::set<std::string>& used, std::string& failure);
   void prepareFiles(Point& point, std::set<std::string>& used);
+  const Series* seriesOf(const RunPoint& point) const;
+  void prepareExternal(Point& point, const Series& series);
   std::vector<std::string> command(const Point& point, int repeat) const;
   Repeat collect(const Point& point, int repeat, const ChildOutcome& child) const;
+  Repeat collectExternal(const Point& point, int repeat, const ChildOutcome& child) const;
   void progress(std::size_t done, std::size_t total, const std::string& last);
 
   const SweepSpec& spec_;
@@ -168,12 +171,18 @@ void Sweep::prepare() {
                                             "sweep reads the iterations and the tests there");
   }
   for (const auto& grid : expandGrid(spec_)) {
-    Point point{grid, {}, {}, {}, {}};
+    Point point{grid, {}, {}, {}, {}, {}};
     char name[16];
     std::snprintf(name, sizeof name, "%03d", grid.index);
     point.directory = options_.outputDir / "runs" / name;
     std::set<std::string> used;
     point.mesh = meshFor(grid, used, point.meshFailure);
+    const Series* series = seriesOf(grid);
+    if (series != nullptr && !series->command.empty()) {
+      prepareExternal(point, *series);
+      points_.push_back(std::move(point));
+      continue; // its [vary] values are the stella series' too: they are checked there
+    }
     prepareFiles(point, used);
     for (const auto& [param, value] : grid.settings) {
       if (!value.empty() && used.count(param) == 0) {
@@ -186,13 +195,51 @@ void Sweep::prepare() {
   }
 }
 
+const Series* Sweep::seriesOf(const RunPoint& point) const {
+  for (const auto& s : spec_.series) {
+    if (s.name == point.series) {
+      return &s;
+    }
+  }
+  return nullptr;
+}
+
+// {out} is marked here and replaced per repeat (command()); {NAME} and {mesh} are replaced now.
+const std::string outMark = "\x01out\x01";
+
+std::string replaceAll(std::string text, const std::string& what, const std::string& by) {
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + by.size())) {
+    text.replace(at, what.size(), by);
+  }
+  return text;
+}
+
+void Sweep::prepareExternal(Point& point, const Series& series) {
+  std::set<std::string> used;
+  point.external =
+      substituteBraces(replaceAll(series.command, "{out}", outMark), point.grid.settings,
+                       point.mesh.empty() ? std::string() : fs::absolute(point.mesh).string(), used);
+  for (int r = 0; r < spec_.repeats; ++r) {
+    const fs::path dir = point.directory / ("r" + std::to_string(r + 1));
+    fs::create_directories(dir);
+    writeText(dir / "command",
+              replaceAll(point.external, outMark, fs::absolute(dir / "out").string()) + "\n");
+  }
+}
+
 std::vector<std::string> Sweep::command(const Point& point, int repeat) const {
   const fs::path dir = point.directory / ("r" + std::to_string(repeat + 1));
+  if (!point.external.empty()) {
+    return {"/bin/sh", "-c", replaceAll(point.external, outMark, fs::absolute(dir / "out").string())};
+  }
   return {options_.stella.string(), "run", (dir / "run.export").string(), "--quiet", "--work-dir",
           (dir / "work").string()};
 }
 
 Repeat Sweep::collect(const Point& point, int repeat, const ChildOutcome& child) const {
+  if (!point.external.empty()) {
+    return collectExternal(point, repeat, child);
+  }
   Repeat r;
   r.child = child;
   const fs::path mess = point.directory / ("r" + std::to_string(repeat + 1)) / messName_;
@@ -206,6 +253,30 @@ Repeat Sweep::collect(const Point& point, int repeat, const ChildOutcome& child)
     r.status = r.report.diagnostic;
   } else {
     r.status = "exit " + std::to_string(child.exitCode);
+  }
+  return r;
+}
+
+// An external run ended well when it exited with 0 and wrote at least one test to {out}.
+Repeat Sweep::collectExternal(const Point& point, int repeat, const ChildOutcome& child) const {
+  Repeat r;
+  r.child = child;
+  const fs::path out = point.directory / ("r" + std::to_string(repeat + 1)) / "out";
+  if (child.timedOut) {
+    r.status = "TIMEOUT";
+  } else if (child.signal != 0) {
+    r.status = "CRASH (signal " + std::to_string(child.signal) + ")";
+  } else if (child.exitCode != 0) {
+    r.status = "exit " + std::to_string(child.exitCode);
+  } else {
+    try {
+      r.report = parseExternalResult(fs::exists(out) ? readText(out) : std::string());
+      r.finished = !r.report.tests.empty();
+      r.status = r.finished ? "OK" : "NO_RESULT";
+    } catch (const SweepError& e) {
+      r.status = "BAD_RESULT";
+      writeText(out.string() + ".error", out.string() + ":" + e.what() + "\n");
+    }
   }
   return r;
 }
@@ -274,7 +345,12 @@ Table Sweep::run() {
       }
       state[k] = started;
       const fs::path dir = point.directory / ("r" + std::to_string(t.repeat + 1));
-      active.emplace_back(t, std::make_unique<Child>(command(point, t.repeat), fs::path(), dir / "stella.log",
+      // An external command runs in the sweep file's folder, as the mesh command does.
+      const fs::path folder = point.external.empty() ? fs::path()
+                              : spec_.file.empty()   ? spec_.study.parent_path()
+                                                     : spec_.file.parent_path();
+      active.emplace_back(t, std::make_unique<Child>(command(point, t.repeat), folder,
+                                                     dir / (point.external.empty() ? "stella.log" : "log"),
                                                      spec_.timeout));
     }
     for (auto it = active.begin(); it != active.end();) {

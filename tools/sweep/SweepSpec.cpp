@@ -120,7 +120,17 @@ Series parseSeries(const SweepSpec& spec, int line, const std::string& text) {
   if (colon == std::string::npos || trim(text.substr(0, colon)).empty()) {
     fail(spec, line, "a series is 'NAME: PARAMETER = value; ...', got '" + text + "'");
   }
-  Series s{trim(text.substr(0, colon)), {}, line};
+  Series s{trim(text.substr(0, colon)), {}, line, {}};
+  const std::string rest = trim(text.substr(colon + 1));
+  if (!rest.empty() && rest.front() == '!') {
+    s.command = trim(rest.substr(1));
+    if (s.command.find("{out}") == std::string::npos) {
+      fail(spec, line,
+           "the command of external series '" + s.name +
+               "' must write its results to {out}, e.g. '! python3 ccx_point.py {H} {out}'");
+    }
+    return s;
+  }
   for (const auto& piece : splitTopLevel(text.substr(colon + 1), ';')) {
     if (!piece.empty()) {
       s.settings.push_back(splitAssignment(spec, line, piece));

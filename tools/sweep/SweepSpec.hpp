@@ -29,6 +29,9 @@ struct Series {
   std::string name;
   std::vector<Setting> settings;
   int line = 0;
+  // An external series (`NAME: ! command`): a shell command run per point instead of stella, with
+  // {NAME}, {mesh} and {out} (the file where it writes its results) replaced (doc/sweep.md).
+  std::string command;
 };
 
 struct SweepSpec {

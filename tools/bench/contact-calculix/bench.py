@@ -91,9 +91,9 @@ def ccx_contact(slave, master, kind="s2s"):
 """
 
 
-def ccx_hertz(work, kind="s2s"):
-    mesh = Mesh(hertz_mesh(work))
-    body = ccx_contact("CSLAVE", "CMASTER", kind) + f"""*BOUNDARY
+def ccx_hertz_body(kind="s2s"):
+    """The hertz2d deck's contact, boundary conditions and step (also ccx_hertz_point.py's)."""
+    return ccx_contact("CSLAVE", "CMASTER", kind) + f"""*BOUNDARY
 NALL, 3, 3, 0.
 BLOC_BASE, 2, 2, 0.
 BLOC_AXE, 1, 1, 0.
@@ -109,6 +109,11 @@ RF
 CSTR
 *END STEP
 """
+
+
+def ccx_hertz(work, kind="s2s"):
+    mesh = Mesh(hertz_mesh(work))
+    body = ccx_hertz_body(kind)
     d = work / f"ccx_hertz2d_{kind}"
     d.mkdir(exist_ok=True)
     write_deck(mesh, d / "hertz.inp", ["BLOC", "IND"], {"BLOC": (E, NU), "IND": (E, NU)},

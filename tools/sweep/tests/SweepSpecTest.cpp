@@ -165,3 +165,17 @@ TEST(SweepGrid, SubstitutesTheMeshCommand) {
   EXPECT_EQ(used, (std::set<std::string>{"H"}));
   EXPECT_THROW(substituteBraces("gmsh -setnumber N {N}", {{"H", "0.5"}}, "", used), SweepError);
 }
+
+TEST(SweepSpec, ExternalSeriesIsACommandWritingOut) {
+  const auto spec = parseSweepFile("study = s.export\n[series]\nGCP: ALGO = 'GCP'\n"
+                                   "CalculiX: ! python3 ccx_point.py {H} {out}  # run per point\n",
+                                   "/s/study.sweep");
+  ASSERT_EQ(spec.series.size(), 2U);
+  EXPECT_TRUE(spec.series[0].command.empty());
+  EXPECT_EQ(spec.series[1].name, "CalculiX");
+  EXPECT_EQ(spec.series[1].command, "python3 ccx_point.py {H} {out}");
+  EXPECT_TRUE(spec.series[1].settings.empty());
+  EXPECT_EQ(errorOf("study = s.export\n[series]\nCalculiX: ! ccx job\n"),
+            "/s/study.sweep:3: the command of external series 'CalculiX' must write its results to {out}, "
+            "e.g. '! python3 ccx_point.py {H} {out}'");
+}

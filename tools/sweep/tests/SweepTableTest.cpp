@@ -113,3 +113,20 @@ TEST(SweepTable, CsvRoundTripsQuotesAndCommas) {
   EXPECT_EQ(back.rows, t.rows);
   EXPECT_THROW(fromCsv("a,b\n1\n"), SweepError);
 }
+
+TEST(MessReport, ExternalResultLinesAgainstHandComputedErrors) {
+  const auto r = parseExternalResult("# written by ccx_point.py\n\n  3042.5 3000 p0 h \n-2 0 gap\n");
+  ASSERT_EQ(r.tests.size(), 2U);
+  EXPECT_EQ(r.tests[0].name, "p0 h");
+  EXPECT_DOUBLE_EQ(r.tests[0].computed, 3042.5);
+  EXPECT_DOUBLE_EQ(r.tests[0].reference, 3000.0);
+  EXPECT_NEAR(r.tests[0].error, 42.5 / 3000.0, 1e-15);
+  EXPECT_DOUBLE_EQ(r.tests[1].error, 2.0); // a reference of 0: the absolute difference
+  EXPECT_TRUE(r.diagnostic.empty());
+  try {
+    parseExternalResult("1 2 ok\n1.0 p0\n");
+    FAIL() << "a line without its reference was accepted";
+  } catch (const SweepError& e) {
+    EXPECT_STREQ(e.what(), "line 2: expected 'COMPUTED REFERENCE NAME', got '1.0 p0'");
+  }
+}

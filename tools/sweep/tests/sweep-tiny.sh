@@ -126,6 +126,34 @@ check(cmd.startswith("cp ../../../../testcases/lame_cylinder/ring_tria3.msh ") a
       "the mesh command as run: " + cmd)
 PY
 grep -q "the mesh command failed" "$out/mesh.txt" || fail "the failed mesh is not reported: $(cat "$out/mesh.txt")"
+# An external series: a command run per point (fake_external.sh standing for CalculiX), timed as
+# stella's runs are, its errors in the same columns; its failing point is a row (exit 3).
+"$stella" sweep "$tiny/external.sweep" --output-dir "$out/ext" --no-plot 2>"$out/ext.txt" ||
+  fail "the external sweep ended with $?: $(cat "$out/ext.txt")"
+/usr/bin/python3 - "$out/ext" <<'PY'
+import csv, os, sys
+out = sys.argv[1]
+rows = list(csv.DictReader(open(os.path.join(out, "sweep.csv"))))
+def check(ok, what):
+    if not ok:
+        sys.exit("FAIL: " + what)
+check([r["label"] for r in rows] == ["QUAD8 MODEL=D_PLAN", "QUAD8 MODEL=D_PLAM", "FAKE MODEL=D_PLAN",
+                                     "FAKE MODEL=D_PLAM"], "labels %s" % [r["label"] for r in rows])
+r = rows[2]
+ea = abs(9.5e-4 - 9.533333333333335e-4) / 9.533333333333335e-4  # 3.4965e-3 by hand; the CSV has 6 digits
+check(r["status"] == "OK" and r["finished"] == "yes" and r["repeats"] == "2", "external OK row: %s" % r)
+check(abs(float(r["err:u_r(a)"]) - ea) <= 1e-5 * ea, "external error %s, hand %g" % (r["err:u_r(a)"], ea))
+check(r["error"] == r["err:u_r(a)"] and r["err:u_r(b)"] == "", "external error columns: %s" % r)
+check(float(r["wall_s"]) >= 0.2, "the external run is timed (it sleeps 0.2 s): %s" % r["wall_s"])
+check(rows[0]["status"] == "OK" and rows[0]["pareto"] == "yes", "stella's row beside it: %s" % rows[0])
+r = rows[3]
+check(r["status"] == "exit 3" and r["finished"] == "no" and r["repeats"] == "1" and r["error"] == "",
+      "a failing external run is a row: %s" % r)
+log = open(os.path.join(out, r["files"], "r1", "log")).read()
+cmd = open(os.path.join(out, r["files"], "r1", "command")).read()
+check("fake: no model D_PLAM" in log, "the external run's log is kept: " + log)
+check(cmd.startswith("./fake_external.sh D_PLAM /") and cmd.strip().endswith("/r1/out"), "the command as run: " + cmd)
+PY
 # Interrupted (SIGINT to the sweep): no new run, the table of what was done, exit 6. 4 points x
 # 1000 repeats (the failing points are not repeated: 2002 runs) cannot end before the signal, which
 # comes as soon as the first run is reported (polled, not slept: no machine is too fast for it); the
