@@ -1,6 +1,6 @@
 // AFFE_CHAR_MECA / AFFE_CHAR_CINE keywords -> MechanicalLoad / KinematicLoad.
 
-#include "solver/model/LoadReader.hpp"
+#include "solver/inputs/LoadReader.hpp"
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/model/RigidRelations.hpp"
