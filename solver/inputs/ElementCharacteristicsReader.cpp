@@ -3,8 +3,8 @@
 #include "solver/inputs/ElementCharacteristicsReader.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/inputs/Selection.hpp"
 #include "solver/model/Model.hpp"
-#include "solver/model/Selection.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 
 #include <algorithm>

@@ -3,8 +3,8 @@
 #include "solver/inputs/LoadReader.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/inputs/Selection.hpp"
 #include "solver/model/RigidRelations.hpp"
-#include "solver/model/Selection.hpp"
 
 #include <cmath>
 #include <fmt/format.h>

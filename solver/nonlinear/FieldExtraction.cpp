@@ -3,7 +3,7 @@
 #include "solver/nonlinear/FieldExtraction.hpp"
 
 #include "interpreter/Diagnostics.hpp"
-#include "solver/model/Selection.hpp"
+#include "solver/inputs/Selection.hpp"
 
 #include <algorithm>
 #include <cmath>

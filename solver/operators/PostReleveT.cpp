@@ -15,7 +15,7 @@
 #include "interpreter/Diagnostics.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/functions/RealFunction.hpp"
-#include "solver/model/Selection.hpp"
+#include "solver/inputs/Selection.hpp"
 #include "solver/post/FieldSelection.hpp"
 #include "solver/post/PathAverage.hpp"
 #include "solver/post/Table.hpp"

@@ -3,8 +3,8 @@
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/inputs/LoadReader.hpp"
+#include "solver/inputs/Selection.hpp"
 #include "solver/model/ModelBuilder.hpp"
-#include "solver/model/Selection.hpp"
 
 #include <gtest/gtest.h>
 
