@@ -17,6 +17,7 @@
 #include "solver/inputs/ElementCharacteristicsReader.hpp"
 #include "solver/inputs/Selection.hpp"
 #include "solver/inputs/StatNonLineInputs.hpp"
+#include "solver/inputs/StatNonLineOutputs.hpp"
 #include "solver/model/Material.hpp"
 #include "solver/model/MaterialField.hpp"
 #include "solver/model/Model.hpp"
@@ -171,12 +172,12 @@ Value runStatNonLine(OperatorCall& call) {
   const CutPolicy cuts = readCutPolicy(list.get());
   const ArchiveSelection archive = readArchiveSelection(kw);
   const NewtonSettings settings = readNewtonSettings(kw, system);
-  Observations observations = Observations::read(kw, *model->mesh);
-  StepMeasures measures = StepMeasures::read(kw);
+  Observations observations = readObservations(kw, *model->mesh);
+  StepMeasures measures = readStepMeasures(kw);
   auto& msg = call.session.message();
-  ConvergenceTableOutput tables(kw, call.session); // AFFICHAGE
+  ConvergenceTableOutput tables(readConvergenceDisplay(kw), call.session); // AFFICHAGE
   NewtonDriver driver(system, settings, tables);
-  const std::unique_ptr<DofMonitor> monitor = DofMonitor::read(kw, system); // SUIVI_DDL
+  const std::unique_ptr<DofMonitor> monitor = readDofMonitor(kw, system); // SUIVI_DDL
   driver.setIterationColumns(monitor.get());
   const std::unique_ptr<StepConstraint> constraint =
       makeContactConstraint(kw, system, call.session.options().cpus);
