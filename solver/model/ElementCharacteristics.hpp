@@ -4,7 +4,8 @@
 // DISCRET_2D, CARA='K_T_D_N', diagonal in the global frame) on the POI1 cells that carry
 // 'DIS_T' / '2D_DIS_T' elements. The spring of a POI1 cell on node n adds k_c to the stiffness
 // of (n, component c) and k_c u_c to its internal forces (notice section 4.4.2: springs hold the
-// rigid-body motions of a body that nothing else holds).
+// rigid-body motions of a body that nothing else holds). The keywords are read by
+// solver/inputs/ElementCharacteristicsReader.
 
 #include "interpreter/Value.hpp"
 #include "solver/mesh/Mesh.hpp"
@@ -16,7 +17,6 @@
 namespace stella {
 
 class Model;
-class KeywordTree; // the readers below take the validated tree; numerics never include it
 
 struct DiscreteSpring {
   CellId cell = 0;
@@ -29,15 +29,6 @@ public:
   std::shared_ptr<const Model> model;
   std::vector<DiscreteSpring> springs; // one per discrete cell given a stiffness, in cell order
 };
-
-// Reads AFFE_CARA_ELEM's keyword tree into `cara` (whose model is set). Throws UserError:
-// CARA_1 (a keyword or CARA value not implemented yet, named), CARA_2 (wrong number of VALE
-// values), CARA_3 (the selection holds no discrete element of the right dimension), CARA_4
-// (negative stiffness).
-void readElementCharacteristics(const KeywordTree& keywords, ElementCharacteristics& cara);
-
-// The CARA_ELEM= of a command (MECA_STATIQUE, STAT_NON_LINE), null when absent.
-std::shared_ptr<const ElementCharacteristics> readCaraElem(const KeywordTree& keywords);
 
 // Checks that every discrete element of the model has a stiffness: CARA_5 naming the first one
 // without, and saying to give CARA_ELEM (null `cara` when the command has none).

@@ -4,9 +4,7 @@
 // computed instant (the instants added by step cutting count, they are part of the list);
 // LIST_INST / INST store the instants found within PRECISION (CRITERE='RELATIF': relative to
 // the instant, 'ABSOLU': absolute). A run that stops on a failure also stores its last
-// converged step (see StatNonLine).
-
-#include "catalog/KeywordTree.hpp"
+// converged step (see StatNonLine). The keywords are read by solver/inputs/ArchivingReader.
 
 #include <vector>
 
@@ -18,9 +16,6 @@ public:
   static ArchiveSelection every(int step);
   // The instants of `times` within `precision` (relative unless `absolute`).
   static ArchiveSelection at(std::vector<double> times, double precision, bool absolute);
-  // From the ARCHIVAGE factor keyword of STAT_NON_LINE (absent or defaulted: every step).
-  static ArchiveSelection read(const KeywordTree& statNonLine);
-
   // Whether the computed instant number `index` (1, 2, ...) at `time` is stored.
   bool selects(int index, double time) const;
 

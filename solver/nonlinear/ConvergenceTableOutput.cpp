@@ -9,17 +9,13 @@
 
 namespace stella {
 
-ConvergenceTableOutput::ConvergenceTableOutput(const KeywordTree& kw, Session& session)
+ConvergenceTableOutput::ConvergenceTableOutput(const ConvergenceDisplay& display, Session& session)
     : std::ostream(nullptr) {
   rdbuf(&buffer_);
   buffer_.message = &session.message();
-  if (!kw.has("AFFICHAGE")) {
-    return;
-  }
-  const KeywordTree& occ = kw.occurrences("AFFICHAGE").front();
-  every_ = static_cast<int>(occ.integerOr("PAS", 1));
-  if (occ.has("UNITE")) {
-    const int unit = static_cast<int>(occ.integer("UNITE"));
+  every_ = display.every;
+  if (display.unit) {
+    const int unit = *display.unit;
     if (unit == 6) {
       return; // the message file already has every table
     }
@@ -27,11 +23,10 @@ ConvergenceTableOutput::ConvergenceTableOutput(const KeywordTree& kw, Session& s
       buffer_.unit = &session.result();
       return;
     }
-    unitFile_ = std::make_unique<std::ofstream>(session.unitPath(unit, occ.locationOf("UNITE"), false),
-                                                std::ios::app);
+    unitFile_ = std::make_unique<std::ofstream>(session.unitPath(unit, display.unitAt, false), std::ios::app);
     if (!*unitFile_) {
       throw UserError(Diagnostic::fatal("SNL_22", fmt::format("AFFICHAGE: unit {} cannot be written", unit),
-                                        occ.locationOf("UNITE")));
+                                        display.unitAt));
     }
     buffer_.unit = unitFile_.get();
   }

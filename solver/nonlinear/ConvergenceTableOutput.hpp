@@ -6,10 +6,11 @@
 // INFO_RESIDU='OUI' asks for the place of the largest residual: the WHERE (MAXI) column that
 // every table has.
 
-#include "catalog/KeywordTree.hpp"
+#include "interpreter/Diagnostics.hpp"
 
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <streambuf>
 
@@ -17,10 +18,18 @@ namespace stella {
 
 class Session;
 
+// AFFICHAGE of STAT_NON_LINE: a table every `every` steps (PAS), on unit `unit` (UNITE, at
+// `unitAt`) besides the message file.
+struct ConvergenceDisplay {
+  int every = 1;
+  std::optional<int> unit;
+  SourceLocation unitAt;
+};
+
 class ConvergenceTableOutput : public std::ostream {
 public:
-  // Reads AFFICHAGE of STAT_NON_LINE; the unit file is opened (appended to) here.
-  ConvergenceTableOutput(const KeywordTree& statNonLine, Session& session);
+  // The unit file of `display` is opened (appended to) here.
+  ConvergenceTableOutput(const ConvergenceDisplay& display, Session& session);
 
   // The table of step `number` (from 1) follows.
   void beginStep(int number);

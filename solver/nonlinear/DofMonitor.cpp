@@ -8,21 +8,6 @@
 
 namespace stella {
 
-std::unique_ptr<DofMonitor> DofMonitor::read(const KeywordTree& kw, const MechanicalSystem& system) {
-  if (kw.occurrences("SUIVI_DDL").empty()) {
-    return nullptr;
-  }
-  std::unique_ptr<DofMonitor> m(new DofMonitor(system));
-  for (const KeywordTree& occ : kw.occurrences("SUIVI_DDL")) {
-    Item item{FieldExtraction::read(occ, *system.model().mesh, "SUIVI_DDL"), ""};
-    if (occ.has("TITRE")) {
-      item.title = fmt::format("{}", fmt::join(occ.texts("TITRE"), " "));
-    }
-    m->items_.push_back(std::move(item));
-  }
-  return m;
-}
-
 std::vector<std::pair<std::string, double>> DofMonitor::values(const Eigen::VectorXd& u,
                                                                const PointState& points) const {
   std::vector<std::pair<std::string, double>> out;

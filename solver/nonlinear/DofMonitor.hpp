@@ -4,7 +4,6 @@
 // Gauss points; EVAL_CHAM / EVAL_ELGA reductions). The column title is TITRE (its lines joined),
 // else the component, node or cell and point, or the reduction (e.g. "DY N3", "MAX SIXX").
 
-#include "catalog/KeywordTree.hpp"
 #include "solver/nonlinear/FieldExtraction.hpp"
 #include "solver/nonlinear/IterationColumns.hpp"
 #include "solver/nonlinear/MechanicalSystem.hpp"
@@ -16,8 +15,13 @@ namespace stella {
 
 class DofMonitor : public IterationColumns {
 public:
-  // Null without SUIVI_DDL.
-  static std::unique_ptr<DofMonitor> read(const KeywordTree& statNonLine, const MechanicalSystem& system);
+  // One SUIVI_DDL occurrence.
+  struct Item {
+    FieldExtraction what;
+    std::string title; // TITRE, or empty
+  };
+  DofMonitor(const MechanicalSystem& system, std::vector<Item> items)
+      : system_(system), items_(std::move(items)) {}
 
   std::string header(const Eigen::VectorXd& u, const PointState& points) const override;
   std::string row(const Eigen::VectorXd& u, const PointState& points) const override;
@@ -25,11 +29,6 @@ public:
   static constexpr int width = 14;
 
 private:
-  explicit DofMonitor(const MechanicalSystem& system) : system_(system) {}
-  struct Item {
-    FieldExtraction what;
-    std::string title; // TITRE, or empty
-  };
   // The values of every occurrence, in column order, with their titles.
   std::vector<std::pair<std::string, double>> values(const Eigen::VectorXd& u,
                                                      const PointState& points) const;

@@ -3,7 +3,6 @@
 #include "solver/nonlinear/FieldExtraction.hpp"
 
 #include "interpreter/Diagnostics.hpp"
-#include "solver/model/Selection.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,10 +12,6 @@
 namespace stella {
 
 namespace {
-
-bool gaussPointField(const std::string& name) {
-  return name == "SIEF_ELGA" || name == "VARI_ELGA" || name == "EPSI_ELGA";
-}
 
 // MIN, MAX, MOY, MAXI_ABS or MINI_ABS of values (not empty).
 double reduce(const std::vector<double>& v, const std::string& how) {
@@ -49,26 +44,8 @@ double reduce(const std::vector<double>& v, const std::string& how) {
 
 } // namespace
 
-FieldExtraction FieldExtraction::read(const KeywordTree& occ, const Mesh& mesh, const std::string& keyword) {
-  FieldExtraction e;
-  e.at = occ.location();
-  e.field = occ.text("NOM_CHAM");
-  // The catalogue refuses the other fields (NOM_CHAM implemente=).
-  STELLA_ASSERT(
-      e.nodal() || gaussPointField(e.field),
-      fmt::format("{} NOM_CHAM='{}' passed the catalogue but cannot be extracted", keyword, e.field));
-  e.components = occ.texts("NOM_CMP");
-  e.evalField = occ.textOr("EVAL_CHAM", "VALE");
-  if (e.nodal()) {
-    e.nodes = selectNodes(mesh, occ);
-  } else {
-    e.cells = selectCells(mesh, occ);
-    e.evalPoint = occ.textOr("EVAL_ELGA", "VALE");
-    for (std::int64_t p : occ.has("POINT") ? occ.integers("POINT") : std::vector<std::int64_t>{}) {
-      e.points.push_back(static_cast<int>(p));
-    }
-  }
-  return e;
+bool FieldExtraction::gaussPointField(const std::string& name) {
+  return name == "SIEF_ELGA" || name == "VARI_ELGA" || name == "EPSI_ELGA";
 }
 
 std::vector<ExtractedValue> FieldExtraction::extract(const Field& f, const Mesh& mesh) const {

@@ -6,8 +6,9 @@
 // cell) and EVAL_CHAM (VALE: one value per node or cell; MIN, MAX, MOY, MAXI_ABS, MINI_ABS: one
 // value over them), as code_aster does. What the catalogue has and stella does not (NOM_VARI,
 // EVAL_CMP='FORMULE', SOUS_POINT, the fields of dynamics) is refused by name.
+// The keywords are read by solver/inputs/StatNonLineOutputs.
 
-#include "catalog/KeywordTree.hpp"
+#include "interpreter/SourceFile.hpp"
 #include "solver/database/Field.hpp"
 #include "solver/mesh/Mesh.hpp"
 
@@ -35,9 +36,8 @@ struct FieldExtraction {
   SourceLocation at;                   // the occurrence
 
   bool nodal() const { return field == "DEPL" || field == "CONT_NOEU"; }
-
-  // `keyword`: OBSERVATION or SUIVI_DDL, for the messages.
-  static FieldExtraction read(const KeywordTree& occurrence, const Mesh& mesh, const std::string& keyword);
+  // SIEF_ELGA, VARI_ELGA, EPSI_ELGA: the fields extracted at the Gauss points.
+  static bool gaussPointField(const std::string& name);
 
   // The values at this instant; SNL_20 when a component or point is not in the field.
   std::vector<ExtractedValue> extract(const Field& f, const Mesh& mesh) const;

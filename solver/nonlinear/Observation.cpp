@@ -3,42 +3,12 @@
 #include "solver/nonlinear/Observation.hpp"
 
 #include "interpreter/Diagnostics.hpp"
-#include "solver/functions/RealFunction.hpp"
-#include "solver/session/OperatorRegistry.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
 namespace stella {
-
-Observations Observations::read(const KeywordTree& kw, const Mesh& mesh) {
-  Observations out;
-  int number = 0;
-  for (const KeywordTree& occ : kw.occurrences("OBSERVATION")) {
-    ++number;
-    Item item;
-    item.what = FieldExtraction::read(occ, mesh, "OBSERVATION");
-    item.title = occ.textOr("TITRE", fmt::format("OBSERVATION_{}", number));
-    item.initial = occ.textOr("OBSE_ETAT_INIT", "OUI") == "OUI";
-    item.every = static_cast<int>(occ.integerOr("PAS_OBSE", 0));
-    if (occ.has("PAS_OBSE") && item.every < 1) {
-      throw UserError(Diagnostic::fatal("SNL_21", "OBSERVATION: PAS_OBSE must be at least 1",
-                                        occ.locationOf("PAS_OBSE")));
-    }
-    if (occ.has("INST")) {
-      item.instants = occ.reals("INST");
-    } else if (occ.has("LIST_INST")) {
-      auto list = conceptData<RealList>(occ.conceptValue("LIST_INST"));
-      STELLA_ASSERT(list != nullptr, "OBSERVATION/LIST_INST holds no listr8");
-      item.instants = list->values;
-    }
-    item.precision = occ.realOr("PRECISION", 1.0e-6);
-    item.absolute = occ.textOr("CRITERE", "RELATIF") == "ABSOLU";
-    out.items_.push_back(std::move(item));
-  }
-  return out;
-}
 
 bool Observations::Item::due(int index, double time) const {
   if (index == 0) {

@@ -8,7 +8,6 @@
 // reuse= continuation), NUME_OBSE (the row number), INST, NOM_CHAM, EVAL_CHAM, NOM_CMP, then
 // NOEUD (nodal VALE) or MAILLE and POINT (Gauss-point VALE) or EVAL_ELGA, and VALE.
 
-#include "catalog/KeywordTree.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/nonlinear/FieldExtraction.hpp"
 #include "solver/post/Table.hpp"
@@ -22,8 +21,19 @@ namespace stella {
 
 class Observations {
 public:
-  // The occurrences of OBSERVATION (none: empty()).
-  static Observations read(const KeywordTree& statNonLine, const Mesh& mesh);
+  // One OBSERVATION occurrence.
+  struct Item {
+    FieldExtraction what;
+    std::string title;
+    bool initial = true;
+    int every = 0;                // PAS_OBSE (0: not given)
+    std::vector<double> instants; // INST / LIST_INST
+    double precision = 1.0e-6;
+    bool absolute = false;
+    bool due(int index, double time) const;
+  };
+  Observations() = default;
+  explicit Observations(std::vector<Item> items) : items_(std::move(items)) {}
   bool empty() const { return items_.empty(); }
 
   // The table the rows go to: the result's 'OBSERVATION' table, continued at a reuse=.
@@ -35,16 +45,6 @@ public:
                const Mesh& mesh);
 
 private:
-  struct Item {
-    FieldExtraction what;
-    std::string title;
-    bool initial = true;
-    int every = 0;                // PAS_OBSE (0: not given)
-    std::vector<double> instants; // INST / LIST_INST
-    double precision = 1.0e-6;
-    bool absolute = false;
-    bool due(int index, double time) const;
-  };
   // The columns of a new table, in code_aster's order (those the occurrences use).
   std::vector<std::string> columnNames() const;
   std::vector<Item> items_;

@@ -9,19 +9,9 @@
 
 namespace stella {
 
-StepMeasures StepMeasures::read(const KeywordTree& kw) {
-  StepMeasures m;
-  if (!kw.has("MESURE")) {
-    return m;
-  }
-  const KeywordTree& occ = kw.occurrences("MESURE").front();
-  m.keepTable_ = occ.textOr("TABLE", "NON") == "OUI";
-  if (occ.has("UNITE")) {
-    m.unit_ = static_cast<int>(occ.integer("UNITE"));
-    m.unitAt_ = occ.locationOf("UNITE");
-  }
-  m.table_->title = "STAT";
-  return m;
+StepMeasures::StepMeasures(bool keepTable, std::optional<int> unit, const SourceLocation& unitAt)
+    : keepTable_(keepTable), unit_(unit), unitAt_(unitAt) {
+  table_->title = "STAT";
 }
 
 StepMeasures::Snapshot StepMeasures::take(const MechanicalSystem& system) {

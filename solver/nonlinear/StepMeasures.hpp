@@ -8,7 +8,6 @@
 // Time_Time_Step. TABLE='OUI' attaches the table to the result (RECU_TABLE(CO=...,
 // NOM_TABLE='STAT')); UNITE writes it to that unit at the end of the command.
 
-#include "catalog/KeywordTree.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/nonlinear/MechanicalSystem.hpp"
 #include "solver/post/Table.hpp"
@@ -23,7 +22,9 @@ class Session;
 
 class StepMeasures {
 public:
-  static StepMeasures read(const KeywordTree& statNonLine);
+  StepMeasures() = default;
+  // MESURE given: TABLE='OUI' (`keepTable`), UNITE (`unit`, at `unitAt`).
+  StepMeasures(bool keepTable, std::optional<int> unit, const SourceLocation& unitAt);
   bool wanted() const { return keepTable_ || unit_.has_value(); }
 
   // Starts the clocks of the next step.

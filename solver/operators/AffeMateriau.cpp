@@ -3,9 +3,9 @@
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/database/MeshConcept.hpp"
+#include "solver/inputs/Selection.hpp"
 #include "solver/model/MaterialField.hpp"
 #include "solver/model/Model.hpp"
-#include "solver/model/Selection.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 
 #include <fmt/format.h>

@@ -2,8 +2,8 @@
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/database/MeshConcept.hpp"
+#include "solver/inputs/Selection.hpp"
 #include "solver/model/ModelBuilder.hpp"
-#include "solver/model/Selection.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 

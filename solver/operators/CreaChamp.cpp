@@ -6,8 +6,8 @@
 // steps (TYPE_MAXI) are refused by name as not implemented yet.
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/inputs/FieldSelection.hpp"
 #include "solver/post/FieldConcept.hpp"
-#include "solver/post/FieldSelection.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 

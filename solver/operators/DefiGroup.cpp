@@ -6,9 +6,9 @@
 #include "interpreter/Diagnostics.hpp"
 #include "solver/database/MeshConcept.hpp"
 #include "solver/database/Result.hpp"
+#include "solver/inputs/FieldSelection.hpp"
 #include "solver/mesh/GroupOperations.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
-#include "solver/post/FieldSelection.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 

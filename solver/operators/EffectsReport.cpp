@@ -1,6 +1,6 @@
 #include "solver/operators/EffectsReport.hpp"
 
-#include "solver/model/Selection.hpp"
+#include "solver/inputs/Selection.hpp"
 
 #include <fmt/format.h>
 

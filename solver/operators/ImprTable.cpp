@@ -2,8 +2,8 @@
 // the result file (unit 8) by default, after FILTRE, NOM_PARA (columns) and TRI (order).
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/inputs/TableFilter.hpp"
 #include "solver/post/Table.hpp"
-#include "solver/post/TableFilter.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 

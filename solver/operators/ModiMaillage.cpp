@@ -5,11 +5,11 @@
 // ECHELLE and SYMETRIE move the nodes. Other operations are refused as not implemented yet.
 
 #include "solver/database/Result.hpp"
+#include "solver/inputs/FieldSelection.hpp"
 #include "solver/mesh/CellOrientation.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 #include "solver/mesh/MeshTransform.hpp"
 #include "solver/operators/MeshOperatorUtil.hpp"
-#include "solver/post/FieldSelection.hpp"
 #include "solver/session/Session.hpp"
 
 #include <fmt/format.h>

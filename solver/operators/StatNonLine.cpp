@@ -12,13 +12,15 @@
 #include "interpreter/Diagnostics.hpp"
 #include "solver/contact/ContactStepConstraint.hpp"
 #include "solver/database/Result.hpp"
-#include "solver/model/ElementCharacteristics.hpp"
+#include "solver/inputs/ArchivingReader.hpp"
+#include "solver/inputs/CommandInputs.hpp"
+#include "solver/inputs/ElementCharacteristicsReader.hpp"
+#include "solver/inputs/Selection.hpp"
+#include "solver/inputs/StatNonLineInputs.hpp"
+#include "solver/inputs/StatNonLineOutputs.hpp"
 #include "solver/model/Material.hpp"
 #include "solver/model/MaterialField.hpp"
 #include "solver/model/Model.hpp"
-#include "solver/model/Selection.hpp"
-#include "solver/nonlinear/Archiving.hpp"
-#include "solver/nonlinear/CommandInputs.hpp"
 #include "solver/nonlinear/ConvergenceTableOutput.hpp"
 #include "solver/nonlinear/DofMonitor.hpp"
 #include "solver/nonlinear/NewtonDriver.hpp"
@@ -27,7 +29,6 @@
 #include "solver/nonlinear/ProgressLine.hpp"
 #include "solver/nonlinear/ResultFields.hpp"
 #include "solver/nonlinear/ResultLoads.hpp"
-#include "solver/nonlinear/StatNonLineInputs.hpp"
 #include "solver/nonlinear/StepMeasures.hpp"
 #include "solver/operators/EffectsReport.hpp"
 #include "solver/session/OperatorRegistry.hpp"
@@ -169,14 +170,14 @@ Value runStatNonLine(OperatorCall& call) {
       readInstants(kw.occurrences("INCREMENT").front(),
                    initialStep ? std::optional<double>(initialStep->step->time) : std::nullopt, list);
   const CutPolicy cuts = readCutPolicy(list.get());
-  const ArchiveSelection archive = ArchiveSelection::read(kw);
+  const ArchiveSelection archive = readArchiveSelection(kw);
   const NewtonSettings settings = readNewtonSettings(kw, system);
-  Observations observations = Observations::read(kw, *model->mesh);
-  StepMeasures measures = StepMeasures::read(kw);
+  Observations observations = readObservations(kw, *model->mesh);
+  StepMeasures measures = readStepMeasures(kw);
   auto& msg = call.session.message();
-  ConvergenceTableOutput tables(kw, call.session); // AFFICHAGE
+  ConvergenceTableOutput tables(readConvergenceDisplay(kw), call.session); // AFFICHAGE
   NewtonDriver driver(system, settings, tables);
-  const std::unique_ptr<DofMonitor> monitor = DofMonitor::read(kw, system); // SUIVI_DDL
+  const std::unique_ptr<DofMonitor> monitor = readDofMonitor(kw, system); // SUIVI_DDL
   driver.setIterationColumns(monitor.get());
   const std::unique_ptr<StepConstraint> constraint =
       makeContactConstraint(kw, system, call.session.options().cpus);

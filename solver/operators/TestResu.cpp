@@ -6,9 +6,9 @@
 // component. CARTE, GENE, OBJET, TEST_NAN and MAILLAGE are refused as not implemented yet.
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/inputs/FieldSelection.hpp"
+#include "solver/inputs/TestKeywords.hpp"
 #include "solver/post/FieldConcept.hpp"
-#include "solver/post/FieldSelection.hpp"
-#include "solver/post/TestKeywords.hpp"
 #include "solver/post/TestReport.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"

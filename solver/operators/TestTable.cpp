@@ -2,9 +2,9 @@
 // column) against VALE_CALC and a reference, printing OK/NOOK lines.
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/inputs/TableFilter.hpp"
+#include "solver/inputs/TestKeywords.hpp"
 #include "solver/post/Table.hpp"
-#include "solver/post/TableFilter.hpp"
-#include "solver/post/TestKeywords.hpp"
 #include "solver/post/TestReport.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"

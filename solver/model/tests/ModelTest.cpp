@@ -2,9 +2,9 @@
 // components the model does not have, groups the mesh does not have, nodes outside the model.
 
 #include "interpreter/Diagnostics.hpp"
-#include "solver/model/LoadReader.hpp"
+#include "solver/inputs/LoadReader.hpp"
+#include "solver/inputs/Selection.hpp"
 #include "solver/model/ModelBuilder.hpp"
-#include "solver/model/Selection.hpp"
 
 #include <gtest/gtest.h>
 

@@ -7,7 +7,7 @@
 #include "catalog/KeywordTree.hpp"
 #include "interpreter/Diagnostics.hpp"
 #include "solver/fem/BoxMesh.hpp"
-#include "solver/model/ElementCharacteristics.hpp"
+#include "solver/inputs/ElementCharacteristicsReader.hpp"
 #include "solver/model/ModelBuilder.hpp"
 #include "solver/nonlinear/ElasticSolve.hpp"
 #include "solver/nonlinear/LinearStatic.hpp"

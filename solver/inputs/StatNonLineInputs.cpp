@@ -1,6 +1,6 @@
 // StatNonLineInputs: keyword trees of STAT_NON_LINE -> settings of the driver and stepper.
 
-#include "solver/nonlinear/StatNonLineInputs.hpp"
+#include "solver/inputs/StatNonLineInputs.hpp"
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/functions/RealFunction.hpp"

@@ -1,6 +1,6 @@
 // CommandInputs: EXCIT, MODELE, CHAM_MATER and SOLVEUR of the static drivers.
 
-#include "solver/nonlinear/CommandInputs.hpp"
+#include "solver/inputs/CommandInputs.hpp"
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/model/RepeatedConditions.hpp"

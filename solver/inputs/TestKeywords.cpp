@@ -1,4 +1,4 @@
-#include "TestKeywords.hpp"
+#include "solver/inputs/TestKeywords.hpp"
 
 #include "interpreter/Diagnostics.hpp"
 

@@ -3,8 +3,8 @@
 // (EQ, NE, LT, GT, LE, GE, VIDE, NON_VIDE, MAXI, MAXI_ABS, MINI, MINI_ABS), VALE / VALE_I /
 // VALE_K, CRITERE and PRECISION for real equality.
 
-#include "Table.hpp"
 #include "catalog/KeywordTree.hpp"
+#include "solver/post/Table.hpp"
 
 #include <vector>
 

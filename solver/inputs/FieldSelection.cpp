@@ -1,7 +1,7 @@
 // FieldSelection: steps, fields, components and entities of results for TEST_RESU and tables.
 
-#include "solver/post/FieldSelection.hpp"
-#include "solver/model/Selection.hpp"
+#include "solver/inputs/FieldSelection.hpp"
+#include "solver/inputs/Selection.hpp"
 #include "solver/post/TestReport.hpp"
 
 #include "interpreter/Diagnostics.hpp"

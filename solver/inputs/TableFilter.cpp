@@ -1,4 +1,4 @@
-#include "TableFilter.hpp"
+#include "solver/inputs/TableFilter.hpp"
 
 #include "interpreter/Diagnostics.hpp"
 

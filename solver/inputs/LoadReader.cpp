@@ -1,10 +1,10 @@
 // AFFE_CHAR_MECA / AFFE_CHAR_CINE keywords -> MechanicalLoad / KinematicLoad.
 
-#include "solver/model/LoadReader.hpp"
+#include "solver/inputs/LoadReader.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/inputs/Selection.hpp"
 #include "solver/model/RigidRelations.hpp"
-#include "solver/model/Selection.hpp"
 
 #include <cmath>
 #include <fmt/format.h>

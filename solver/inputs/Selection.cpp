@@ -1,6 +1,6 @@
 // Selection of cells and nodes by groups and names, with errors that name what is missing.
 
-#include "solver/model/Selection.hpp"
+#include "solver/inputs/Selection.hpp"
 
 #include "interpreter/Diagnostics.hpp"
 

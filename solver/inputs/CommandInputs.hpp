@@ -1,6 +1,6 @@
 #pragma once
-// Keywords MECA_STATIQUE and STAT_NON_LINE share: EXCIT (loads and FONC_MULT), MODELE and
-// CHAM_MATER, SOLVEUR (the method named in the message file).
+// The inputs layer (issue 15) for the keywords MECA_STATIQUE and STAT_NON_LINE share: EXCIT (loads and
+// FONC_MULT), MODELE and CHAM_MATER, SOLVEUR (the method named in the message file).
 
 #include "catalog/KeywordTree.hpp"
 #include "solver/linalg/LinearSolver.hpp"

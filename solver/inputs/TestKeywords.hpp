@@ -3,8 +3,8 @@
 // PRECISION, CRITERE, ORDRE_GRANDEUR, LEGENDE) turned into a ValueTest (reported by
 // TestReport.hpp's reportTest).
 
-#include "TestReport.hpp"
 #include "catalog/KeywordTree.hpp"
+#include "solver/post/TestReport.hpp"
 
 #include <string>
 #include <utility>
