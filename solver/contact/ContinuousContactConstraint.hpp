@@ -69,6 +69,12 @@ public:
   // The convergence-table note: nodes in contact, status changes since the last correction (the
   // criterion of the generalised Newton on the status), largest interpenetration.
   std::string iterationNote() const override;
+  // The columns the note starts with (ContinuousIterationColumns.cpp), named after code_aster's:
+  // CONT_NEWT (ALGO_RESO_CONT='NEWTON': slave nodes whose status changed since the last correction)
+  // or BOUC_CONT (POINT_FIXE: status loops so far), RESI_GEOM (the geometric criterion at the row's
+  // iterate), and with friction FROT_NEWT / BOUC_FROT (the change of the threshold |LAGS_C| at the
+  // last correction, or since the last friction loop, over max |LAGS_C|: what RESI_FROT bounds).
+  std::string iterationHeader() const override;
   // DEFI_LIST_INST ECHEC EVENEMENT='INTERPENETRATION' (ContinuousPenetration.cpp).
   void setInterpenetrationPolicy(std::optional<FailurePolicy> policy) { policy_ = std::move(policy); }
   // The factor on COEF_PENA_CONT of each zone (PENE_MAXI of ADAPT_COEF/TOUT, ADAPT_COEF_PENA).
@@ -138,6 +144,9 @@ private:
   bool acceptFriction(const Eigen::VectorXd& u);
   void resetFrictionStep();
   void recordThreshold(); // |LAGS_C| before a correction (the RESI_FROT test of NEWTON)
+  // The RESI_FROT criterion: the change of |LAGS_C| against the threshold it is compared with, over
+  // max |LAGS_C| (infinite when they all vanished, 0 when nothing changed); negative before any correction.
+  double frictionCriterion() const;
   bool withFrictionRows() const override { return definition_->hasFriction(); }
   // The interpenetration of the penalised zones against PENE_MAXI (ADAPT_COEF/TOUT) and the
   // INTERPENETRATION event: false when a penalty was raised (ContinuousPenetration.cpp).
@@ -169,6 +178,7 @@ private:
   std::vector<double> threshold_;      // per link: frozen threshold pressure (POINT_FIXE)
   std::vector<double> lastThreshold_;  // per link: |LAGS_C| at the previous correction (RESI_FROT)
   int frictionIterations_ = 0;
+  double noteGeometry_ = -1.0;          // geometricCriterion() at the last addForces
   std::optional<FailurePolicy> policy_; // INTERPENETRATION event
   std::vector<double> penaltyFactor_;   // per zone: the raises of COEF_PENA_CONT
 };

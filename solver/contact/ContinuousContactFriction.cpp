@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <limits>
 
 namespace stella::contact {
 
@@ -203,9 +204,12 @@ void ContinuousContactConstraint::recordThreshold() {
   }
 }
 
-bool ContinuousContactConstraint::acceptFriction(const Eigen::VectorXd& u) {
+double ContinuousContactConstraint::frictionCriterion() const {
   const auto& c = definition_->settings.continuous;
   const std::vector<double>& before = c.frictionFixedPoint ? threshold_ : lastThreshold_;
+  if (before.empty()) {
+    return -1.0;
+  }
   double change = 0.0;
   double scale = 0.0;
   for (std::size_t i = 0; i < rows_.link.size(); ++i) {
@@ -216,14 +220,24 @@ bool ContinuousContactConstraint::acceptFriction(const Eigen::VectorXd& u) {
       change = std::max(change, std::fabs(now - before[k]));
     }
   }
-  if (before.empty() || change <= c.frictionResidual * scale) {
+  if (scale > 0.0) {
+    return change / scale;
+  }
+  return change > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;
+}
+
+bool ContinuousContactConstraint::acceptFriction(const Eigen::VectorXd& u) {
+  const auto& c = definition_->settings.continuous;
+  // change <= RESI_FROT x max |LAGS_C| (none before the first correction)
+  const double criterion = frictionCriterion();
+  if (criterion < 0.0 || criterion <= c.frictionResidual) {
     return true;
   }
   if (!c.frictionFixedPoint) {
     // NEWTON: the threshold |LAGS_C| still moved at the last correction
     continuation_ = fmt::format("friction threshold moved by {:.2e} of |LAGS_C| (RESI_FROT {:g}): Newton "
                                 "iterations go on",
-                                change / scale, c.frictionResidual);
+                                criterion, c.frictionResidual);
     return false;
   }
   if (++frictionIterations_ > c.maxFrictionIterations) {
@@ -234,7 +248,7 @@ bool ContinuousContactConstraint::acceptFriction(const Eigen::VectorXd& u) {
                 "the friction loop (ALGO_RESO_FROT='POINT_FIXE') did not converge at INST {}: after {} "
                 "friction iterations the threshold |LAGS_C| still changes by {:.2e} of its maximum "
                 "(RESI_FROT {:g})",
-                time_, c.maxFrictionIterations, change / scale, c.frictionResidual),
+                time_, c.maxFrictionIterations, criterion, c.frictionResidual),
             definition_->location)
             .withNote("raise ITER_FROT_MAXI, use ALGO_RESO_FROT='NEWTON', or refine the list of instants"));
   }
@@ -246,7 +260,7 @@ bool ContinuousContactConstraint::acceptFriction(const Eigen::VectorXd& u) {
   lastStatus_ = status_;
   continuation_ = fmt::format("friction threshold updated (loop {}, change {:.2e} of |LAGS_C|): Newton "
                               "iterations go on",
-                              frictionIterations_, change / scale);
+                              frictionIterations_, criterion);
   return false;
 }
 
