@@ -292,6 +292,7 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
     return;
   }
   recordThreshold();
+  const std::vector<SlidingNewton> sliding = slidingLinearisations(u, status);
   // The multipliers solving the Schur complement: the normal ones of the augmented-Lagrangian rows
   // in contact and (ALGO_FROT='STANDARD') the tangential ones of the sticking rows. Each has its
   // constraint row B (A, or T_j: the gap, or the slip along friction direction j, vanishes) and its
@@ -330,6 +331,7 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
   }
   addContactIterations(1);
   if (contact.empty()) {
+    updateSlidingPressures(u, ddu, status, sliding);
     return;
   }
   const SparseRows& a = rows_.problem.A;
@@ -418,7 +420,7 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
   if (dy.size() == dlambda.size()) {
     dlambda -= dy;
   }
-  updateSlidingPressures(u + ddu, status); // mu |lambda_n| q / |q| after the update
+  updateSlidingPressures(u, ddu, status, sliding); // the sliding multipliers' Newton update
 }
 
 void ContinuousContactConstraint::redundant(Eigen::Index row) const {

@@ -31,7 +31,8 @@
 //   tangential pressure lambda_t of each slave node, a vector of the tangent plane in 3D
 //   ((LAGS_F1, LAGS_F2) = lambda_t / (mu |LAGS_C|) on the pairing's tangents), the slip
 //   s = T (u - u_start) since the start of the step. The Coulomb cone is a disc: |q| against the
-//   threshold, sliding along q / |q| (the consistent tangent of that direction in 3D). Indicator q = lambda_t
+//   threshold, sliding along q / |q| (in 3D with STANDARD the sliding multiplier is a condensed Newton
+//   unknown: the consistent tangent of the disc's return map, slidingNewton()). Indicator q = lambda_t
 //   + rho_t s (ALGO_FROT='STANDARD', rho_t = COEF_FROT) or lambda_t,start + rho_t s ('PENALISATION',
 //   COEF_PENA_FROT: the return mapping of a penalty spring, lambda_t,start that of the step's start);
 //   threshold mu |lambda_n| (ALGO_RESO_FROT='NEWTON': the current LAGS_C; 'POINT_FIXE': the LAGS_C of the
@@ -130,8 +131,24 @@ private:
     return frictionRows_[static_cast<std::size_t>(direction)];
   }
   int frictionDirections(Eigen::Index row) const;
-  // After a correction: the multipliers of the sliding rows follow the threshold (STANDARD).
-  void updateSlidingPressures(const Eigen::VectorXd& u, const std::vector<char>& status);
+  // The Newton linearisation of a sliding row's multiplier (ALGO_FROT='STANDARD', two friction
+  // directions): its equation lambda_t = mu t e, e = q / |q|, q = lambda_t + rho_t s, condensed (the
+  // consistent tangent of the disc's return map, ContinuousContactFriction.cpp).
+  struct SlidingNewton {
+    bool active = false;
+    Eigen::Vector2d e = Eigen::Vector2d::Zero(); // the sliding direction q / |q|
+    double beta = 0.0;                           // mu t / (|q| - mu t)
+    Eigen::Vector2d r = Eigen::Vector2d::Zero(); // lambda_t - mu t e, the equation's residual
+  };
+  SlidingNewton slidingNewton(Eigen::Index row, char s, const Eigen::Vector2d& slip) const;
+  // Before a correction: the linearisation of every row at u (inactive but for STANDARD 3D sliding).
+  std::vector<SlidingNewton> slidingLinearisations(const Eigen::VectorXd& u,
+                                                   const std::vector<char>& status) const;
+  // After a correction ddu at u: the multipliers of the sliding rows (STANDARD) take their Newton
+  // update mu t e + beta P (rho_t T ddu - r) (P = I - e e^T) where linearised, otherwise follow the
+  // threshold along q / |q| at u + ddu.
+  void updateSlidingPressures(const Eigen::VectorXd& u, const Eigen::VectorXd& ddu,
+                              const std::vector<char>& status, const std::vector<SlidingNewton>& newton);
   // LinkState friction and slip (pairing tangents) of a row, and back.
   void frictionState(Eigen::Index row, char s, const Eigen::Vector2d& slip, LinkState& state) const;
   void acceptFrictionState(Eigen::Index row, const LinkState& state);
