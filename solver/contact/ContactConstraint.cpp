@@ -208,6 +208,13 @@ double ContactConstraint::geometricResidual(const Eigen::VectorXd& u) const {
   return change > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;
 }
 
+double ContactConstraint::geometricCriterion(const Eigen::VectorXd& u) const {
+  if (!anyResolved_ || definition_->settings.geometricUpdate == GeometricUpdate::None) {
+    return -1.0;
+  }
+  return geometricResidual(u);
+}
+
 bool ContactConstraint::farApart(const Eigen::VectorXd& u) const {
   if (rows_.link.empty() || rows_.link.size() != resolvedSlaveNodes_) {
     return false; // a slave node without a link might find one when paired again

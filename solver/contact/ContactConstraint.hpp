@@ -87,6 +87,9 @@ protected:
   double time_ = 0.0;
   int noteActive_ = 0;           // for the convergence table
   double notePenetration_ = 0.0; // idem
+  // The geometric criterion at u (what REAC_GEOM='AUTOMATIQUE' compares with RESI_GEOM and CONTROLE
+  // with 1 %) for the convergence table; negative when nothing is resolved or REAC_GEOM='SANS'.
+  double geometricCriterion(const Eigen::VectorXd& u) const;
 
 private:
   void pairAt(const Eigen::VectorXd& u);

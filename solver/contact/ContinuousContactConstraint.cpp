@@ -237,6 +237,7 @@ void ContinuousContactConstraint::beginStep(const Eigen::VectorXd& u, double tim
 void ContinuousContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::VectorXd& forces,
                                             std::vector<Eigen::Triplet<double>>* tangent) {
   const Eigen::Index m = rows_.problem.A.rows();
+  noteGeometry_ = geometricCriterion(u);
   if (m == 0) {
     return;
   }
@@ -291,6 +292,7 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
     return;
   }
   recordThreshold();
+  const std::vector<SlidingNewton> sliding = slidingLinearisations(u, status);
   // The multipliers solving the Schur complement: the normal ones of the augmented-Lagrangian rows
   // in contact and (ALGO_FROT='STANDARD') the tangential ones of the sticking rows. Each has its
   // constraint row B (A, or T_j: the gap, or the slip along friction direction j, vanishes) and its
@@ -329,6 +331,7 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
   }
   addContactIterations(1);
   if (contact.empty()) {
+    updateSlidingPressures(u, ddu, status, sliding);
     return;
   }
   const SparseRows& a = rows_.problem.A;
@@ -417,7 +420,7 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
   if (dy.size() == dlambda.size()) {
     dlambda -= dy;
   }
-  updateSlidingPressures(u + ddu, status); // mu |lambda_n| q / |q| after the update
+  updateSlidingPressures(u, ddu, status, sliding); // the sliding multipliers' Newton update
 }
 
 void ContinuousContactConstraint::redundant(Eigen::Index row) const {
@@ -484,22 +487,6 @@ bool ContinuousContactConstraint::acceptResolution(const Eigen::VectorXd& u) {
   lastStatus_ = status_;
   continuation_ = fmt::format("contact status changed on {} slave node(s): Newton iterations go on", changed);
   return false;
-}
-
-std::string ContinuousContactConstraint::iterationNote() const {
-  int changes = 0;
-  for (std::size_t k = 0; k < status_.size() && k < lastStatus_.size(); ++k) {
-    changes += status_[k] != lastStatus_[k] ? 1 : 0;
-  }
-  if (friction()) {
-    int sticking = 0;
-    for (char st : status_) {
-      sticking += st == 1 ? 1 : 0;
-    }
-    return fmt::format("CONT {} act. ({} stick) {} chg pene {:.2e}", noteActive_, sticking, changes,
-                       notePenetration_);
-  }
-  return fmt::format("CONT {} act. {} chg pene {:.2e}", noteActive_, changes, notePenetration_);
 }
 
 std::string ContinuousContactConstraint::continuationNote() const {

@@ -31,7 +31,8 @@
 //   tangential pressure lambda_t of each slave node, a vector of the tangent plane in 3D
 //   ((LAGS_F1, LAGS_F2) = lambda_t / (mu |LAGS_C|) on the pairing's tangents), the slip
 //   s = T (u - u_start) since the start of the step. The Coulomb cone is a disc: |q| against the
-//   threshold, sliding along q / |q| (the consistent tangent of that direction in 3D). Indicator q = lambda_t
+//   threshold, sliding along q / |q| (in 3D with STANDARD the sliding multiplier is a condensed Newton
+//   unknown: the consistent tangent of the disc's return map, slidingNewton()). Indicator q = lambda_t
 //   + rho_t s (ALGO_FROT='STANDARD', rho_t = COEF_FROT) or lambda_t,start + rho_t s ('PENALISATION',
 //   COEF_PENA_FROT: the return mapping of a penalty spring, lambda_t,start that of the step's start);
 //   threshold mu |lambda_n| (ALGO_RESO_FROT='NEWTON': the current LAGS_C; 'POINT_FIXE': the LAGS_C of the
@@ -69,6 +70,12 @@ public:
   // The convergence-table note: nodes in contact, status changes since the last correction (the
   // criterion of the generalised Newton on the status), largest interpenetration.
   std::string iterationNote() const override;
+  // The columns the note starts with (ContinuousIterationColumns.cpp), named after code_aster's:
+  // CONT_NEWT (ALGO_RESO_CONT='NEWTON': slave nodes whose status changed since the last correction)
+  // or BOUC_CONT (POINT_FIXE: status loops so far), RESI_GEOM (the geometric criterion at the row's
+  // iterate), and with friction FROT_NEWT / BOUC_FROT (the change of the threshold |LAGS_C| at the
+  // last correction, or since the last friction loop, over max |LAGS_C|: what RESI_FROT bounds).
+  std::string iterationHeader() const override;
   // DEFI_LIST_INST ECHEC EVENEMENT='INTERPENETRATION' (ContinuousPenetration.cpp).
   void setInterpenetrationPolicy(std::optional<FailurePolicy> policy) { policy_ = std::move(policy); }
   // The factor on COEF_PENA_CONT of each zone (PENE_MAXI of ADAPT_COEF/TOUT, ADAPT_COEF_PENA).
@@ -124,8 +131,24 @@ private:
     return frictionRows_[static_cast<std::size_t>(direction)];
   }
   int frictionDirections(Eigen::Index row) const;
-  // After a correction: the multipliers of the sliding rows follow the threshold (STANDARD).
-  void updateSlidingPressures(const Eigen::VectorXd& u, const std::vector<char>& status);
+  // The Newton linearisation of a sliding row's multiplier (ALGO_FROT='STANDARD', two friction
+  // directions): its equation lambda_t = mu t e, e = q / |q|, q = lambda_t + rho_t s, condensed (the
+  // consistent tangent of the disc's return map, ContinuousContactFriction.cpp).
+  struct SlidingNewton {
+    bool active = false;
+    Eigen::Vector2d e = Eigen::Vector2d::Zero(); // the sliding direction q / |q|
+    double beta = 0.0;                           // mu t / (|q| - mu t)
+    Eigen::Vector2d r = Eigen::Vector2d::Zero(); // lambda_t - mu t e, the equation's residual
+  };
+  SlidingNewton slidingNewton(Eigen::Index row, char s, const Eigen::Vector2d& slip) const;
+  // Before a correction: the linearisation of every row at u (inactive but for STANDARD 3D sliding).
+  std::vector<SlidingNewton> slidingLinearisations(const Eigen::VectorXd& u,
+                                                   const std::vector<char>& status) const;
+  // After a correction ddu at u: the multipliers of the sliding rows (STANDARD) take their Newton
+  // update mu t e + beta P (rho_t T ddu - r) (P = I - e e^T) where linearised, otherwise follow the
+  // threshold along q / |q| at u + ddu.
+  void updateSlidingPressures(const Eigen::VectorXd& u, const Eigen::VectorXd& ddu,
+                              const std::vector<char>& status, const std::vector<SlidingNewton>& newton);
   // LinkState friction and slip (pairing tangents) of a row, and back.
   void frictionState(Eigen::Index row, char s, const Eigen::Vector2d& slip, LinkState& state) const;
   void acceptFrictionState(Eigen::Index row, const LinkState& state);
@@ -138,6 +161,9 @@ private:
   bool acceptFriction(const Eigen::VectorXd& u);
   void resetFrictionStep();
   void recordThreshold(); // |LAGS_C| before a correction (the RESI_FROT test of NEWTON)
+  // The RESI_FROT criterion: the change of |LAGS_C| against the threshold it is compared with, over
+  // max |LAGS_C| (infinite when they all vanished, 0 when nothing changed); negative before any correction.
+  double frictionCriterion() const;
   bool withFrictionRows() const override { return definition_->hasFriction(); }
   // The interpenetration of the penalised zones against PENE_MAXI (ADAPT_COEF/TOUT) and the
   // INTERPENETRATION event: false when a penalty was raised (ContinuousPenetration.cpp).
@@ -169,6 +195,7 @@ private:
   std::vector<double> threshold_;      // per link: frozen threshold pressure (POINT_FIXE)
   std::vector<double> lastThreshold_;  // per link: |LAGS_C| at the previous correction (RESI_FROT)
   int frictionIterations_ = 0;
+  double noteGeometry_ = -1.0;          // geometricCriterion() at the last addForces
   std::optional<FailurePolicy> policy_; // INTERPENETRATION event
   std::vector<double> penaltyFactor_;   // per zone: the raises of COEF_PENA_CONT
 };

@@ -320,6 +320,7 @@ void ContinuousPointContactConstraint::beginStep(const Eigen::VectorXd& u, doubl
 void ContinuousPointContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::VectorXd& forces,
                                                  std::vector<Eigen::Triplet<double>>* tangent) {
   const std::vector<char>& status = currentStatus(u);
+  noteGeometry_ = geometricCriterion(u);
   int active = 0;
   double penetration = 0.0;
   for (std::size_t q = 0; q < points_.size(); ++q) {
@@ -595,14 +596,6 @@ void ContinuousPointContactConstraint::accepted(const std::vector<LinkState>& ro
   lambdaStart_ = lambda_;
   contactStart_ = status_;
   firstStep_ = false;
-}
-
-std::string ContinuousPointContactConstraint::iterationNote() const {
-  int changes = 0;
-  for (std::size_t q = 0; q < status_.size() && q < lastStatus_.size(); ++q) {
-    changes += status_[q] != lastStatus_[q] ? 1 : 0;
-  }
-  return fmt::format("CONT {} pts act. {} chg pene {:.2e}", noteActive_, changes, notePenetration_);
 }
 
 std::string ContinuousPointContactConstraint::continuationNote() const {

@@ -46,6 +46,8 @@ public:
   std::string singularNote() const override;
   std::string continuationNote() const override;
   std::string iterationNote() const override;
+  // CONT_NEWT / BOUC_CONT and RESI_GEOM as ContinuousContactConstraint (ContinuousIterationColumns.cpp).
+  std::string iterationHeader() const override;
 
   int contactPoints() const { return static_cast<int>(points_.size()); }
 
@@ -94,6 +96,7 @@ private:
   bool useInitial_ = true;
   bool firstStep_ = true;
   int statusIterations_ = 0;
+  double noteGeometry_ = -1.0; // geometricCriterion() at the last addForces
   std::string continuation_;
 };
 

@@ -323,7 +323,8 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
   // With RECH_LINEAIRE a column gives the length rho of the line search that led to the row.
   const bool rhoColumn = settings_.lineSearch.enabled;
   const std::string extraHeader =
-      columns_ != nullptr ? columns_->header(start.displacement, start.points) : "";
+      (columns_ != nullptr ? columns_->header(start.displacement, start.points) : "") +
+      (constraint_ != nullptr ? constraint_->iterationHeader() : std::string());
   const std::string rule = std::string(78, '-') + (rhoColumn ? std::string(11, '-') : std::string()) +
                            std::string(extraHeader.size(), '-');
   log_ << fmt::format("   INST {:<12g}\n", time);

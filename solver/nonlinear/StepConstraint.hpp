@@ -80,6 +80,9 @@ public:
   // Extra text for the convergence-table row of the last iteration (e.g. active links, maximum
   // interpenetration); may be empty.
   virtual std::string iterationNote() const = 0;
+  // The header of the columns iterationNote() starts with ("| NAME |" cells, as the table's own), or
+  // empty when its note has no columns; asked once per step, after beginStep().
+  virtual std::string iterationHeader() const { return {}; }
 
   // The convergence-table line written when acceptConvergence() refused a converged state.
   virtual std::string continuationNote() const { return "geometric update: contact pairing recomputed"; }

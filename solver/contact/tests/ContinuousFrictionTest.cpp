@@ -22,12 +22,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <vector>
 
 namespace stella::contact {
 namespace {
@@ -293,6 +295,140 @@ TEST(ContinuousFriction, PressedFurtherWhileSliding) {
       ASSERT_EQ(first.size(), instants.size() - 1) << r.message;
       EXPECT_LT(first[first.size() - 2], 1e-12);
       EXPECT_LT(first.back(), 1e-12);
+    }
+  }
+}
+
+// The rows of the convergence tables of a message file: per INST, each iteration's cells (split at
+// '|') and the continuation line that follows it, if any.
+struct TableRow {
+  double inst = 0.0;
+  std::vector<std::string> cells; // [0] ITER ... [5] the first contact column
+  std::string continuation;
+};
+
+std::vector<TableRow> convergenceRows(const std::string& message, std::vector<std::string>& headers) {
+  std::vector<TableRow> rows;
+  std::istringstream in(message);
+  std::string line;
+  double inst = 0.0;
+  while (std::getline(in, line)) {
+    if (line.rfind("   INST ", 0) == 0) {
+      inst = std::stod(line.substr(8));
+      continue;
+    }
+    if (line.rfind("   | ITER |", 0) == 0) {
+      headers.push_back(line);
+      continue;
+    }
+    if (line.rfind("   |      | ", 0) == 0 && !rows.empty()) {
+      rows.back().continuation = line.substr(12);
+      continue;
+    }
+    if (line.rfind("   | ", 0) != 0 || line.size() < 10 ||
+        std::isdigit(static_cast<unsigned char>(line[8])) == 0) {
+      continue;
+    }
+    TableRow row;
+    row.inst = inst;
+    std::string cell;
+    std::istringstream cells(line.substr(4));
+    while (std::getline(cells, cell, '|')) {
+      row.cells.push_back(cell);
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+double cellValue(const TableRow& row, std::size_t column) {
+  const std::string& c = row.cells.at(column);
+  return c.find('-') != std::string::npos && c.find_first_of("0123456789") == std::string::npos
+             ? -1.0
+             : std::stod(c);
+}
+
+// The number printed in a continuation line after `before` ("moved by 1.43e-01 of").
+double numberAfter(const std::string& text, const std::string& before) {
+  const auto at = text.find(before);
+  return at == std::string::npos ? -1.0 : std::stod(text.substr(at + before.size()));
+}
+
+// The contact columns of the continuous formulation (CONT_NEWT, RESI_GEOM, FROT_NEWT / BOUC_FROT) against
+// what the constraint decided with them and against the closed form of the block pressed further while
+// sliding. Once every node slides (t = 2.5 and 3: N(t) = N0 (1 + (t - 1) / 2), u_top = 0.025 (t - 1)), the
+// first correction of a step is exact (PressedFurtherWhileSliding), so:
+//  - the threshold |LAGS_C| moved from N(t - 0.5) to N(t) at it: FROT_NEWT = BOUC_FROT = 1 - N(t - 0.5)
+//    / N(t) (1/7 and 1/8: uniform, LAGS_C is proportional to N on every node);
+//  - the contact nodes moved by the slip increment du - mu dN / G since the pairing of the step's start,
+//    the structure by at most du (the top): RESI_GEOM = 1 - mu dN / (G du) = 0.79 (ALGO_RESO_FROT=
+//    'NEWTON'); with POINT_FIXE the threshold is frozen at N(t - 0.5) there, the force too, and the
+//    slip takes the whole du: RESI_GEOM = 1;
+//  - the status did not change: CONT_NEWT = 0 (ALGO_RESO_CONT='NEWTON', the default, in both).
+// Every continuation line (status changed on n nodes, threshold moved by c, pairing recomputed) follows
+// a row whose columns say so, and the last row of each step holds the criteria (0 changes, FROT_NEWT <=
+// RESI_FROT, RESI_GEOM <= 0.01 or '-'). Printed to 4 digits: compared to 1e-3.
+TEST(ContinuousFriction, ConvergenceTableHasTheContinuousContactColumns) {
+  const Mesh mesh = blockOnPlane();
+  for (bool fixedPoint : {false, true}) {
+    Shear s;
+    s.mu = 0.3;
+    s.pressEnd = 2.0;
+    s.fixedPoint = fixedPoint;
+    const StudyRun r = runStudy(fmt::format("columns_{}", fixedPoint ? "point_fixe" : "newton"), mesh,
+                                s.comm(mesh, instants));
+    ASSERT_EQ(r.diagnostic, JobDiagnostic::Ok);
+    std::vector<std::string> headers;
+    const std::vector<TableRow> rows = convergenceRows(r.message, headers);
+    ASSERT_EQ(headers.size(), instants.size() - 1) << r.message;
+    const std::string status = "CONT_NEWT"; // ALGO_RESO_CONT='NEWTON' (the default) in both
+    const std::string frot = fixedPoint ? "BOUC_FROT" : "FROT_NEWT";
+    for (const std::string& h : headers) {
+      EXPECT_NE(h.find(fmt::format("| {:<10} | RESI_GEOM  | {:<10} |", status, frot)), std::string::npos)
+          << h;
+    }
+    constexpr std::size_t cont = 5;
+    constexpr std::size_t geom = 6;
+    constexpr std::size_t fric = 7;
+    int frictionNotes = 0;
+    int geometryNotes = 0;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const TableRow& row = rows[i];
+      ASSERT_GT(row.cells.size(), fric + 1) << r.message;
+      const bool last = i + 1 == rows.size() || rows[i + 1].inst != row.inst;
+      if (row.continuation.find("friction threshold") != std::string::npos) {
+        ++frictionNotes;
+        const double said = numberAfter(row.continuation, fixedPoint ? "change " : "moved by ");
+        EXPECT_NEAR(cellValue(row, fric), said, 5e-3 * said) << row.continuation;
+        EXPECT_GT(cellValue(row, fric), s.frictionResidual);
+      }
+      if (row.continuation.find("contact status changed on") != std::string::npos) {
+        EXPECT_EQ(cellValue(row, cont), numberAfter(row.continuation, "changed on ")) << row.continuation;
+      }
+      if (row.continuation.find("pairing recomputed") != std::string::npos) {
+        ++geometryNotes;
+        EXPECT_GT(cellValue(row, geom), 0.01);
+      }
+      if (last) {
+        EXPECT_TRUE(row.continuation.empty()) << row.continuation;
+        EXPECT_EQ(cellValue(row, cont), 0.0);
+        EXPECT_LE(cellValue(row, geom), 0.01);
+        EXPECT_LE(cellValue(row, fric), s.frictionResidual);
+      }
+    }
+    EXPECT_GT(frictionNotes, 0);
+    EXPECT_GT(geometryNotes, 0);
+    for (double t : {2.5, 3.0}) {
+      const auto first =
+          std::find_if(rows.begin(), rows.end(), [&](const TableRow& x) { return x.inst == t; });
+      ASSERT_NE(first, rows.end());
+      const double dN = s.normal(t) - s.normal(t - 0.5);
+      EXPECT_NEAR(cellValue(*first, fric), dN / s.normal(t), 1e-3 * dN / s.normal(t)) << t;
+      const double du = Shear::sheared(t) - Shear::sheared(t - 0.5);
+      // POINT_FIXE: the threshold frozen at N(t - 0.5) holds the force, the slip takes the whole du
+      const double geometric = fixedPoint ? 1.0 : 1.0 - s.mu * dN / (shearModulus() * du);
+      EXPECT_NEAR(cellValue(*first, geom), geometric, 1e-3 * geometric) << t;
+      EXPECT_EQ(cellValue(*first, cont), 0.0) << t;
     }
   }
 }
