@@ -97,15 +97,42 @@ std::string SaddleSolver::backendName() const {
   return solver_ ? std::string(solver_->backendName()) : std::string("-");
 }
 
+void SaddleSolver::chooseCondensedRelations(const std::vector<std::vector<std::pair<int, double>>>& merged) {
+  const int n = dofs_.physicalCount();
+  removed_ = eliminated_;
+  condensed_.clear();
+  keptRows_.clear();
+  std::vector<int> holders(static_cast<std::size_t>(n), 0);
+  for (const auto& terms : merged) {
+    for (const auto& [j, c] : terms) {
+      ++holders[static_cast<std::size_t>(j)];
+    }
+  }
+  for (std::size_t r = 0; r < rows_.size(); ++r) {
+    const auto& terms = merged[r];
+    bool single = condense_ && terms.size() == 1 && terms[0].second != 0.0 &&
+                  holders[static_cast<std::size_t>(terms[0].first)] == 1;
+    // a term on an eliminated DOF would move a prescribed value into g: left dualised
+    for (const auto& t : rows_[r].terms) {
+      single = single && t.first == terms[0].first;
+    }
+    if (single) {
+      condensed_.push_back({static_cast<int>(r), terms[0].first, terms[0].second});
+      removed_[static_cast<std::size_t>(terms[0].first)] = true;
+    } else {
+      keptRows_.push_back(static_cast<int>(r));
+    }
+  }
+}
+
 void SaddleSolver::prepareRelations() {
   if (!dofTermStart_.empty()) {
     return;
   }
   const int n = dofs_.physicalCount();
-  rowTerms_.assign(rows_.size(), {});
-  std::vector<std::tuple<int, int, double>> byDof; // (DOF, relation, coefficient)
+  std::vector<std::vector<std::pair<int, double>>> merged(rows_.size());
   for (std::size_t r = 0; r < rows_.size(); ++r) {
-    auto& terms = rowTerms_[r];
+    std::vector<std::pair<int, double>> terms;
     for (const auto& [j, c] : rows_[r].terms) {
       if (!eliminated_[static_cast<std::size_t>(j)]) {
         terms.emplace_back(j, c);
@@ -113,17 +140,21 @@ void SaddleSolver::prepareRelations() {
     }
     std::stable_sort(terms.begin(), terms.end(),
                      [](const auto& x, const auto& y) { return x.first < y.first; });
-    std::vector<std::pair<int, double>> merged;
     for (const auto& t : terms) {
-      if (!merged.empty() && merged.back().first == t.first) {
-        merged.back().second += t.second;
+      if (!merged[r].empty() && merged[r].back().first == t.first) {
+        merged[r].back().second += t.second;
       } else {
-        merged.push_back(t);
+        merged[r].push_back(t);
       }
     }
-    terms = std::move(merged);
-    for (const auto& [j, c] : terms) {
-      byDof.emplace_back(j, static_cast<int>(r), c);
+  }
+  chooseCondensedRelations(merged);
+  rowTerms_.assign(keptRows_.size(), {});
+  std::vector<std::tuple<int, int, double>> byDof; // (DOF, kept relation, coefficient)
+  for (std::size_t k = 0; k < keptRows_.size(); ++k) {
+    rowTerms_[k] = std::move(merged[static_cast<std::size_t>(keptRows_[k])]);
+    for (const auto& [j, c] : rowTerms_[k]) {
+      byDof.emplace_back(j, static_cast<int>(k), c);
     }
   }
   std::sort(byDof.begin(), byDof.end(), [](const auto& x, const auto& y) {
@@ -145,14 +176,14 @@ template <class Entry, class RowEnd>
 void SaddleSolver::walk(const StiffnessMatrix& k, linalg::Storage storage, Entry&& entry,
                         RowEnd&& rowEnd) const {
   const int n = dofs_.physicalCount();
-  const int m = static_cast<int>(rows_.size());
+  const int m = static_cast<int>(keptRows_.size());
   const bool upper = storage == linalg::Storage::Upper;
   for (int i = 0; i < n; ++i) {
-    if (eliminated_[static_cast<std::size_t>(i)]) {
+    if (removed_[static_cast<std::size_t>(i)]) {
       entry(i, scale_);
     } else {
       k.forEachInRow(i, [&](int j, double v) {
-        if (!eliminated_[static_cast<std::size_t>(j)] && (!upper || j >= i)) {
+        if (!removed_[static_cast<std::size_t>(j)] && (!upper || j >= i)) {
           entry(j, v);
         }
       });
@@ -177,7 +208,7 @@ void SaddleSolver::walk(const StiffnessMatrix& k, linalg::Storage storage, Entry
 
 bool SaddleSolver::border(const StiffnessMatrix& k, linalg::Storage storage) {
   prepareRelations();
-  const int size = dofs_.physicalCount() + static_cast<int>(rows_.size());
+  const int size = dofs_.physicalCount() + static_cast<int>(keptRows_.size());
   if (bordered_.sharedPattern() && borderedFor_ == k.patternId() && bordered_.storage() == storage) {
     double* v = bordered_.values().data();
     std::size_t at = 0;
@@ -210,26 +241,41 @@ bool SaddleSolver::border(const StiffnessMatrix& k, linalg::Storage storage) {
 
 void SaddleSolver::extractEliminatedColumns(const StiffnessMatrix& k) {
   const int n = dofs_.physicalCount();
-  anyEliminated_ = std::find(eliminated_.begin(), eliminated_.end(), true) != eliminated_.end();
+  anyEliminated_ = std::find(removed_.begin(), removed_.end(), true) != removed_.end();
   if (!anyEliminated_) {
     eliminatedColumns_ = Eigen::SparseMatrix<double>();
+    condensedRows_ = Eigen::SparseMatrix<double>();
     return;
+  }
+  std::vector<bool> condensed(static_cast<std::size_t>(n), false);
+  for (const auto& c : condensed_) {
+    condensed[static_cast<std::size_t>(c.dof)] = true;
   }
   const bool upper = k.storage() == linalg::Storage::Upper;
   std::vector<Eigen::Triplet<double>> t;
+  std::vector<Eigen::Triplet<double>> rowsOfK;
   for (int i = 0; i < n; ++i) {
-    const bool ei = eliminated_[static_cast<std::size_t>(i)];
+    const bool ei = removed_[static_cast<std::size_t>(i)];
+    const bool ci = condensed[static_cast<std::size_t>(i)];
     k.forEachInRow(i, [&](int j, double v) {
-      if (eliminated_[static_cast<std::size_t>(j)]) {
+      if (removed_[static_cast<std::size_t>(j)]) {
         t.emplace_back(i, j, v);
       }
       if (upper && ei && j != i) {
         t.emplace_back(j, i, v);
       }
+      if (ci) {
+        rowsOfK.emplace_back(i, j, v);
+      }
+      if (upper && condensed[static_cast<std::size_t>(j)] && j != i) {
+        rowsOfK.emplace_back(j, i, v);
+      }
     });
   }
   eliminatedColumns_.resize(n, n);
   eliminatedColumns_.setFromTriplets(t.begin(), t.end());
+  condensedRows_.resize(n, n);
+  condensedRows_.setFromTriplets(rowsOfK.begin(), rowsOfK.end());
 }
 
 void SaddleSolver::factorize(const Eigen::SparseMatrix<double>& k, bool checkSingular, bool symmetric) {
@@ -244,7 +290,8 @@ void SaddleSolver::factorize(const Eigen::SparseMatrix<double>& k, bool checkSin
 
 void SaddleSolver::factorize(const StiffnessMatrix& k, bool symmetric) {
   const auto start = Clock::now();
-  const int m = static_cast<int>(rows_.size());
+  prepareRelations();
+  const int m = static_cast<int>(keptRows_.size());
   const linalg::MatrixKind kind = !symmetric ? linalg::MatrixKind::Unsymmetric
                                   : m > 0    ? linalg::MatrixKind::SymmetricIndefinite
                                              : linalg::MatrixKind::SymmetricPositiveDefinite;
@@ -287,7 +334,10 @@ void SaddleSolver::factorize(const StiffnessMatrix& k, bool symmetric) {
   } catch (const linalg::SingularMatrixError& e) {
     // Only now the (costly) diagnosis that names the free node and component.
     checkSingularity(k.toEigen());
-    const int eq = e.equation();
+    const int n = dofs_.physicalCount();
+    const int eq = e.equation() >= n && e.equation() < n + static_cast<int>(keptRows_.size())
+                       ? n + keptRows_[static_cast<std::size_t>(e.equation() - n)]
+                       : e.equation();
     throw UserError(
         Diagnostic::fatal(
             "SOLVE_1", fmt::format("the stiffness matrix is singular ({} found a null pivot{})", e.backend(),
@@ -304,47 +354,64 @@ void SaddleSolver::factorize(const StiffnessMatrix& k, bool symmetric) {
 void SaddleSolver::solve(const Eigen::VectorXd& r, const Eigen::VectorXd& g,
                          const Eigen::VectorXd& prescribed, Eigen::VectorXd& du, Eigen::VectorXd& dlambda) {
   const int n = dofs_.physicalCount();
-  const int m = static_cast<int>(rows_.size());
+  const int m = static_cast<int>(keptRows_.size());
   Eigen::VectorXd b(n + m);
   b.head(n) = r;
-  b.tail(m) = scale_ * g;
+  for (int k = 0; k < m; ++k) {
+    b(n + k) = scale_ * g(keptRows_[static_cast<std::size_t>(k)]);
+  }
   // Move the prescribed increments of eliminated DOFs to the right-hand side.
   Eigen::VectorXd p = Eigen::VectorXd::Zero(n);
-  bool any = false;
   for (int i = 0; i < n; ++i) {
     if (eliminated_[static_cast<std::size_t>(i)]) {
       p(i) = prescribed(i);
-      any = any || prescribed(i) != 0.0;
     }
   }
-  if (any) {
+  for (const auto& c : condensed_) {
+    p(c.dof) = g(c.row) / c.coefficient;
+  }
+  if (anyEliminated_ && n > 0 && p.cwiseAbs().maxCoeff() != 0.0) {
     b.head(n) -= eliminatedColumns_ * p;
-    for (int rr = 0; rr < m; ++rr) {
-      for (const auto& [j, c] : rows_[static_cast<std::size_t>(rr)].terms) {
-        if (eliminated_[static_cast<std::size_t>(j)]) {
-          b(n + rr) -= scale_ * c * p(j);
+    for (int k = 0; k < m; ++k) {
+      for (const auto& [j, c] :
+           rows_[static_cast<std::size_t>(keptRows_[static_cast<std::size_t>(k)])].terms) {
+        if (removed_[static_cast<std::size_t>(j)]) {
+          b(n + k) -= scale_ * c * p(j);
         }
       }
     }
   }
   for (int i = 0; i < n; ++i) {
-    if (eliminated_[static_cast<std::size_t>(i)]) {
+    if (removed_[static_cast<std::size_t>(i)]) {
       b(i) = scale_ * p(i);
     }
   }
   Eigen::VectorXd x = b;
   solveBordered(Eigen::Map<Eigen::MatrixXd>(x.data(), x.size(), 1));
   du = x.head(n);
-  dlambda = scale_ * x.tail(m);
+  dlambda.resize(static_cast<Eigen::Index>(rows_.size()));
+  for (int k = 0; k < m; ++k) {
+    dlambda(keptRows_[static_cast<std::size_t>(k)]) = scale_ * x(n + k);
+  }
+  if (!condensed_.empty()) {
+    for (const auto& c : condensed_) {
+      du(c.dof) = p(c.dof);
+    }
+    // row j of the first block: K_j du + c lambda = r_j
+    const Eigen::VectorXd kdu = condensedRows_ * du;
+    for (const auto& c : condensed_) {
+      dlambda(c.row) = (r(c.dof) - kdu(c.dof)) / c.coefficient;
+    }
+  }
 }
 
 void SaddleSolver::solveHomogeneous(Eigen::Ref<Eigen::MatrixXd> rhs) {
   const Eigen::Index n = dofs_.physicalCount();
-  const Eigen::Index m = static_cast<Eigen::Index>(rows_.size());
+  const Eigen::Index m = static_cast<Eigen::Index>(keptRows_.size());
   Eigen::MatrixXd x = Eigen::MatrixXd::Zero(n + m, rhs.cols());
   x.topRows(n) = rhs;
   for (Eigen::Index i = 0; i < n; ++i) {
-    if (eliminated_[static_cast<std::size_t>(i)]) {
+    if (removed_[static_cast<std::size_t>(i)]) {
       x.row(i).setZero();
     }
   }

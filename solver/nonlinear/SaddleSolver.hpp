@@ -9,6 +9,13 @@
 // UMFPACK for MULT_FRONT/LDLT; CHOLMOD when there is no multiplier; unsymmetric storage when a
 // tangent is unsymmetric); s is the mean of |diag K| so that both blocks have the same magnitude. DOFs
 // imposed by AFFE_CHAR_CINE are eliminated (unit diagonal, prescribed value moved to the right-hand side).
+// A relation on a single DOF (DDL_IMPO, FACE_IMPO, a one-term LIAISON_DDL: c u_j = g) whose DOF no
+// other relation holds is eliminated the same way (u_j = g / c) instead of being dualised, and its
+// multiplier is recovered after the solve from row j of the first block: lambda = (r_j - K_j du) / c.
+// So a study whose relations are all of that kind gives an SPD matrix (CHOLMOD for MULT_FRONT/LDLT,
+// MUMPS SYM=1, GCPC accepted); only the other relations keep a multiplier row. The solution and the
+// multipliers are those of the dualised system (condenseSingleDofRelations(false) keeps the former
+// path: tests and the benchmark compare both).
 //
 // The bordered matrix is built in compressed rows straight from the in-place assembled K
 // (StiffnessMatrix): its pattern is computed once and rebuilt, with the solver's symbolic
@@ -89,7 +96,14 @@ public:
   // C u (one per row).
   Eigen::VectorXd times(const Eigen::VectorXd& u) const;
 
+  // The DOFs imposed by AFFE_CHAR_CINE (not those of the single-DOF relations eliminated here,
+  // which keep their multipliers in solve()).
   const std::vector<bool>& eliminated() const { return eliminated_; }
+  // Eliminates the single-DOF relations (default) or dualises every relation (the former path);
+  // before the first factorize().
+  void condenseSingleDofRelations(bool condense) { condense_ = condense; }
+  // Relations that keep a multiplier row in the factorised matrix (after the first factorize()).
+  int borderedRelationCount() const { return static_cast<int>(keptRows_.size()); }
   int factorizations() const { return factorizations_; }
   // With `keep`, factorize() compares the values with those it last factorised and keeps the
   // factors when they are equal (STAT_NON_LINE: elastic bodies under dual contact); it holds a
@@ -107,9 +121,12 @@ private:
   // non-finite solution.
   void solveBordered(Eigen::Ref<Eigen::MatrixXd> x);
   void checkSingularity(const Eigen::SparseMatrix<double>& k) const;
-  // Per physical DOF, the (relation, coefficient) of the relations holding it (free DOFs only);
-  // per relation, its (DOF, coefficient) terms on free DOFs, sorted and merged.
+  // Chooses the single-DOF relations to eliminate (condensed_, removed_, keptRows_); then per
+  // physical DOF, the (kept relation, coefficient) of the kept relations holding it (free DOFs
+  // only); per kept relation, its (DOF, coefficient) terms on free DOFs, sorted and merged.
   void prepareRelations();
+  // The single-DOF relations c u_j = g to eliminate: j is not eliminated and no other relation holds it.
+  void chooseCondensedRelations(const std::vector<std::vector<std::pair<int, double>>>& merged);
   // Visits the bordered matrix row by row: entry(column, value) in increasing column order,
   // rowEnd(row) after each row.
   template <class Entry, class RowEnd>
@@ -124,7 +141,17 @@ private:
   const Mesh& mesh_;
   std::vector<ConstraintRow> rows_;
   std::vector<bool> eliminated_;
-  Eigen::SparseMatrix<double> eliminatedColumns_; // K(:, eliminated) of the last factorisation
+  bool condense_ = true;
+  struct Condensed {
+    int row;
+    int dof;
+    double coefficient;
+  };
+  std::vector<Condensed> condensed_;              // the single-DOF relations eliminated
+  std::vector<bool> removed_;                     // eliminated_ and the DOFs of condensed_
+  std::vector<int> keptRows_;                     // the relations with a multiplier row, in order
+  Eigen::SparseMatrix<double> eliminatedColumns_; // K(:, removed) of the last factorisation
+  Eigen::SparseMatrix<double> condensedRows_;     // K(j, :) for the DOFs of condensed_
   bool anyEliminated_ = false;
   double scale_ = 1.0;
   linalg::SolverOptions options_;

@@ -80,9 +80,12 @@ Value runMecaStatique(OperatorCall& call) {
   for (double t : instants(kw)) {
     StaticSolution s = solver.solve(t, withStress);
     if (first) {
-      msg << fmt::format("   linear solver: {} ({} matrix, factorised once)\n", system.solver().backendName(),
-                         system.dofs().lagrangeCount() > 0 ? "symmetric indefinite"
-                                                           : "symmetric positive definite");
+      const int bordered = system.solver().borderedRelationCount();
+      msg << fmt::format("   linear solver: {} ({} matrix, factorised once; {} single-DOF relation(s) "
+                         "eliminated, {} multiplier(s) in the matrix)\n",
+                         system.solver().backendName(),
+                         bordered > 0 ? "symmetric indefinite" : "symmetric positive definite",
+                         system.dofs().lagrangeCount() - bordered, bordered);
       first = false;
     }
     PhaseClock clock(system.phases().post);

@@ -5,10 +5,12 @@
 // The clamped face x = 0 is eliminated (AFFE_CHAR_CINE: SPD, CHOLMOD for MULT_FRONT) or dualised
 // (`lagrange`: DDL_IMPO, symmetric indefinite); unit nodal forces on the face x = 1.
 //
-//   stella-bench-system CASE DIVISIONS SOLVER [lagrange] [old]
+//   stella-bench-system CASE DIVISIONS SOLVER [lagrange] [dualised] [old]
 //     CASE      hexa8 | tetra10 | quad4 (plane strain) | quad8
 //     DIVISIONS hexahedra (quadrangles) per side of the unit cube (square)
 //     SOLVER    MUMPS | MULT_FRONT
+//     dualised  with `lagrange`: every DDL_IMPO keeps its multiplier (the path before the
+//               SaddleSolver eliminated single-DOF relations: symmetric indefinite)
 //     old       the former path: triplets and the singularity diagnosis before the factorisation
 //               (default: the in-place assembly into the StiffnessMatrix pattern, MECA_STATIQUE's)
 // Output: one line "key=value ..." per run.
@@ -71,7 +73,7 @@ std::shared_ptr<MaterialField> steel(std::shared_ptr<const Mesh> mesh) {
 int main(int argc, char** argv) {
   if (argc < 4) {
     std::cerr << "usage: stella-bench-system hexa8|tetra10|quad4|quad8 DIVISIONS MUMPS|MULT_FRONT [lagrange] "
-                 "[old]\n";
+                 "[dualised] [old]\n";
     return 2;
   }
   const std::string kase = argv[1];
@@ -79,7 +81,9 @@ int main(int argc, char** argv) {
   const std::string solverName = argv[3];
   bool lagrange = false;
   bool oldPath = false;
+  bool dualised = false;
   for (int i = 4; i < argc; ++i) {
+    dualised = dualised || std::strcmp(argv[i], "dualised") == 0;
     lagrange = lagrange || std::strcmp(argv[i], "lagrange") == 0;
     oldPath = oldPath || std::strcmp(argv[i], "old") == 0;
   }
@@ -127,6 +131,7 @@ int main(int argc, char** argv) {
   linalg::SolverOptions options;
   options.method = solverName == "MULT_FRONT" ? linalg::SolverMethod::MultFront : linalg::SolverMethod::Mumps;
   system.solver().setOptions(options);
+  system.solver().condenseSingleDofRelations(!dualised);
   const double tNumbering = clock.lap();
   const double mNumbering = peakResidentMegabytes();
 
@@ -195,6 +200,8 @@ int main(int argc, char** argv) {
   const double other = tNumberingAll + tAssembly + tPost;
   std::cout << "case=" << kase << " divisions=" << n << " solver=" << solverName
             << " backend=" << system.solver().backendName() << " lagrange=" << (lagrange ? 1 : 0)
+            << " dualised=" << (dualised ? 1 : 0)
+            << " multipliers=" << system.solver().borderedRelationCount()
             << " path=" << (oldPath ? "old" : "new") << " dofs=" << system.dofs().size()
             << " cells=" << mesh->cellCount() << " nnz=" << nnz << " matrix_mb=" << matrixBytes / 1048576.0
             << " t_mesh=" << tMesh << " t_numbering=" << tNumberingAll << " t_pattern=" << tPattern
