@@ -107,7 +107,32 @@ void refuse(const std::vector<contact::Unimplemented>& refused) {
   }
 }
 
-// ALGO_CONT='LAC' (every zone): 2D models, no friction (LacContactConstraint.hpp).
+// FROTTEMENT='COULOMB' with ALGO_CONT='LAC' (lac/LacFriction.cpp): 2D, ALGO_FROT='STANDARD',
+// ALGO_RESO_FROT='NEWTON', no SEUIL_INIT nor SANS_GROUP_NO_FR.
+void refuseLacFriction(const ContactDefinition& def, fem::Modelling modelling) {
+  const std::string note =
+      "LAC friction (beyond code_aster) is implemented in 2D with ALGO_FROT='STANDARD' and "
+      "ALGO_RESO_FROT='NEWTON'; use ALGO_CONT='STANDARD' for the rest";
+  if (modelling == fem::Modelling::ThreeD) {
+    notImplemented("FROTTEMENT='COULOMB' with ALGO_CONT='LAC' in 3D", def.settings.frictionAt, note);
+  }
+  if (def.settings.continuous.frictionFixedPoint) {
+    notImplemented("ALGO_RESO_FROT='POINT_FIXE' with ALGO_CONT='LAC'", def.settings.frictionAt, note);
+  }
+  for (const auto& z : def.zones) {
+    if (z.continuous.frictionPenalised) {
+      notImplemented("ALGO_FROT='PENALISATION' with ALGO_CONT='LAC'", z.location, note);
+    }
+    if (z.continuous.initialThreshold) {
+      notImplemented("SEUIL_INIT with ALGO_CONT='LAC'", z.location, note);
+    }
+    if (!z.continuous.frictionExcludedGroups.empty()) {
+      notImplemented("SANS_GROUP_NO_FR with ALGO_CONT='LAC'", z.continuous.frictionExcludedAt, note);
+    }
+  }
+}
+
+// ALGO_CONT='LAC' (every zone): 2D and 3D models, friction in 2D (LacContactConstraint.hpp).
 std::unique_ptr<StepConstraint> makeLac(std::shared_ptr<const ContactDefinition> def,
                                         const MechanicalSystem& system,
                                         const std::optional<FailurePolicy>& policy,
@@ -121,8 +146,7 @@ std::unique_ptr<StepConstraint> makeLac(std::shared_ptr<const ContactDefinition>
     }
   }
   if (def->hasFriction()) {
-    notImplemented("FROTTEMENT='COULOMB' with ALGO_CONT='LAC'", def->settings.frictionAt,
-                   "LAC solves frictionless contact (notice §3.1.4); use ALGO_CONT='STANDARD' for friction");
+    refuseLacFriction(*def, system.model().modelling);
   }
   if (def->settings.smoothing) {
     notImplemented("LISSAGE='OUI' with ALGO_CONT='LAC'", def->location,

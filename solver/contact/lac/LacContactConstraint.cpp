@@ -128,6 +128,8 @@ LacContactConstraint::LacContactConstraint(std::shared_ptr<const ContactDefiniti
   contactEquations_.assign(equations.begin(), equations.end());
   lagsC_.assign(patches.size(), 0.0);
   lagsCStart_ = lagsC_;
+  lagsT_ = lagsC_;
+  lagsTStart_ = lagsC_;
   status_.assign(patches.size(), 0);
   accepted_ = status_;
   uPairing_ = Eigen::VectorXd::Zero(dofs.physicalCount());
@@ -144,6 +146,7 @@ void LacContactConstraint::pairAt(const Eigen::VectorXd& u) {
   for (std::size_t p = 0; p < rows_.size(); ++p) {
     if (!paired(p)) {
       lagsC_[p] = 0.0; // not paired: no contact pressure
+      lagsT_[p] = 0.0;
     }
   }
 }
@@ -170,7 +173,7 @@ std::vector<double> LacContactConstraint::meanGaps(const Eigen::VectorXd& u) con
 std::vector<char> LacContactConstraint::statusAt(const Eigen::VectorXd& u) const {
   std::vector<char> s(rows_.size(), 0);
   for (std::size_t p = 0; p < rows_.size(); ++p) {
-    s[p] = paired(p) && lagsC_[p] + rho_ * gapAt(p, u) < 0.0 ? 1 : 0;
+    s[p] = paired(p) && lagsC_[p] + rho_ * gapAt(p, u) < 0.0 ? contactCode(p, u) : 0;
   }
   return s;
 }
@@ -186,6 +189,9 @@ void LacContactConstraint::beginStep(const Eigen::VectorXd& u, double time) {
   time_ = time;
   uStart_ = u.head(dofs_.physicalCount());
   lagsC_ = lagsCStart_; // a step cut restarts from the multipliers of its start
+  lagsT_ = lagsTStart_;
+  limitBefore_.clear();
+  limitAfter_.clear();
   const auto& s = definition_->settings;
   if (s.continuous.geometryNewton || s.geometricUpdate != GeometricUpdate::None || !everPaired_) {
     pairAt(uStart_);
@@ -236,6 +242,9 @@ void LacContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::VectorXd& 
         forces(e) -= pressure * v;
       }
     }
+    if (friction()) {
+      addFrictionForces(p, status[p], u, forces, tangent);
+    }
     if (tangent != nullptr) {
       const double c = on ? rho_ / r.pairedLength : 0.0; // zeros keep the pattern of the pairing
       for (const auto& [i, vi] : r.gradient) {
@@ -254,90 +263,56 @@ void LacContactConstraint::correct(const Eigen::VectorXd& u, Eigen::VectorXd& dd
   const std::vector<char> status = currentStatus(u);
   useInitial_ = false;
   lastStatus_ = status;
-  std::vector<std::size_t> contact;
+  // the rows of the Schur complement: the mean gap of each patch in contact, the mean slip of each
+  // sticking patch (friction)
+  std::vector<SchurRow> rows;
   for (std::size_t p = 0; p < rows_.size(); ++p) {
     if (status[p] == 0) {
       lagsC_[p] = 0.0;
+      lagsT_[p] = 0.0;
     } else {
-      contact.push_back(p);
+      rows.push_back({p, false});
+    }
+  }
+  for (std::size_t p = 0; p < rows_.size(); ++p) {
+    if (friction() && status[p] == 1) {
+      rows.push_back({p, true});
+    }
+  }
+  if (friction()) {
+    limitBefore_.resize(rows_.size());
+    for (std::size_t p = 0; p < rows_.size(); ++p) {
+      limitBefore_[p] = frictionLimit(p);
     }
   }
   ++eliminations_;
-  if (contact.empty()) {
-    return;
+  if (!rows.empty()) {
+    eliminate(u, ddu, dlambda, solver, rows);
   }
-  // rows B_P = dG_P / L_P (the gradient of the mean gap); force columns the same, y = L_P dlambda
-  const auto mc = static_cast<Eigen::Index>(contact.size());
-  const Eigen::Index n = ddu.size();
-  constexpr Eigen::Index block = 64;
-  Eigen::MatrixXd s = Eigen::MatrixXd::Zero(mc, mc);
-  for (Eigen::Index first = 0; first < mc; first += block) {
-    const Eigen::Index cols = std::min(block, mc - first);
-    Eigen::MatrixXd x = Eigen::MatrixXd::Zero(n, cols);
-    for (Eigen::Index j = 0; j < cols; ++j) {
-      const LacPatchRow& r = rows_[contact[static_cast<std::size_t>(first + j)]];
-      for (const auto& [e, v] : r.gradient) {
-        x(e, j) += v / r.pairedLength;
+  if (friction()) {
+    for (std::size_t p = 0; p < rows_.size(); ++p) {
+      if (status[p] == 2) {
+        lagsT_[p] = tangentialPressure(p, 2, u); // on the threshold of the corrected LAGS_C
       }
     }
-    solver.solveHomogeneous(x);
-    for (Eigen::Index i = 0; i < mc; ++i) {
-      const LacPatchRow& r = rows_[contact[static_cast<std::size_t>(i)]];
-      for (const auto& [e, v] : r.gradient) {
-        s.row(i).segment(first, cols) += (v / r.pairedLength) * x.row(e);
-      }
+    limitAfter_.resize(rows_.size());
+    for (std::size_t p = 0; p < rows_.size(); ++p) {
+      limitAfter_[p] = frictionLimit(p);
     }
-  }
-  Eigen::VectorXd rhs(mc);
-  for (Eigen::Index i = 0; i < mc; ++i) {
-    const std::size_t p = contact[static_cast<std::size_t>(i)];
-    double bdu = 0.0;
-    for (const auto& [e, v] : rows_[p].gradient) {
-      bdu += v * ddu(e);
-    }
-    rhs(i) = gapAt(p, u) + bdu / rows_[p].pairedLength;
-  }
-  const Eigen::LDLT<Eigen::MatrixXd> ldlt(0.5 * (s + s.transpose()));
-  const Eigen::VectorXd d = ldlt.vectorD();
-  const double scale = d.cwiseAbs().maxCoeff();
-  for (Eigen::Index p = 0; p < mc; ++p) {
-    if (!(std::fabs(d(p)) > 1e-12 * scale)) {
-      const Eigen::PermutationMatrix<Eigen::Dynamic> perm(ldlt.transpositionsP());
-      const Eigen::PermutationMatrix<Eigen::Dynamic> inverse(perm.inverse());
-      redundant(contact[static_cast<std::size_t>(inverse.indices()(p))]);
-    }
-  }
-  const Eigen::VectorXd y = ldlt.solve(rhs);
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
-  for (Eigen::Index j = 0; j < mc; ++j) {
-    const std::size_t p = contact[static_cast<std::size_t>(j)];
-    const LacPatchRow& r = rows_[p];
-    for (const auto& [e, v] : r.gradient) {
-      f(e) += y(j) * v / r.pairedLength;
-    }
-    lagsC_[p] += y(j) / r.pairedLength;
-  }
-  Eigen::VectorXd dx;
-  Eigen::VectorXd dy;
-  solver.solve(f, Eigen::VectorXd::Zero(dlambda.size()), Eigen::VectorXd::Zero(n), dx, dy);
-  ddu -= dx;
-  if (dy.size() == dlambda.size()) {
-    dlambda -= dy;
   }
 }
 
-void LacContactConstraint::redundant(std::size_t patch) const {
+void LacContactConstraint::redundant(std::size_t patch, bool slip) const {
   const Mesh& mesh = *definition_->mesh;
   const auto& cells = mesh.lacPatches()[patch].cells;
   const int zone = patchZone_[patch];
   throw UserError(
-      Diagnostic::fatal(
-          "CONTACT_11",
-          fmt::format("the contact conditions are redundant at INST {}: the mean gap of the LAC "
-                      "patch of slave cell {} (zone {}) cannot move independently of the "
-                      "other patches in contact",
-                      time_, mesh.cellName(cells.front()), zone + 1),
-          definition_->zones[static_cast<std::size_t>(zone)].location)
+      Diagnostic::fatal("CONTACT_11",
+                        fmt::format("the contact conditions are redundant at INST {}: the mean {} of the LAC "
+                                    "patch of slave cell {} (zone {}) cannot move independently of the "
+                                    "other patches in contact",
+                                    time_, slip ? "slip" : "gap", mesh.cellName(cells.front()), zone + 1),
+                        definition_->zones[static_cast<std::size_t>(zone)].location)
           .withNote("a patch whose nodes are all held by DDL_IMPO in the normal direction, or two zones "
                     "constraining the same surface, make the conditions redundant"));
 }
@@ -416,16 +391,18 @@ bool LacContactConstraint::geometrySettled(const Eigen::VectorXd& u) {
 
 bool LacContactConstraint::acceptConvergence(const Eigen::VectorXd& u) {
   continuation_.clear();
-  if (!statusSettled(u) || !geometrySettled(u)) {
+  if (!statusSettled(u) || !frictionSettled() || !geometrySettled(u)) {
     return false;
   }
   accepted_ = statusAt(u);
   for (std::size_t p = 0; p < rows_.size(); ++p) {
     if (accepted_[p] == 0) {
       lagsC_[p] = 0.0;
+      lagsT_[p] = 0.0;
     }
   }
   lagsCStart_ = lagsC_;
+  lagsTStart_ = lagsT_;
   firstStep_ = false;
   stepGaps_ = meanGaps(u);
   return true;
@@ -504,6 +481,9 @@ void LacContactConstraint::store(ResultStep& step) const {
   }
   std::vector<std::string> components = depl.components();
   components.push_back("LAGS_C");
+  if (friction()) {
+    components.push_back("LAGS_F1");
+  }
   const std::size_t nodes = depl.entityCount();
   const std::size_t c0 = depl.componentCount();
   auto out = std::make_shared<Field>(Field::nodal(depl.quantity(), components, nodes));
@@ -522,6 +502,9 @@ void LacContactConstraint::store(ResultStep& step) const {
       out->value(n, c0) = lagsC_[p];
       out->setDefined(n, c0);
     }
+  }
+  if (friction()) {
+    storeFriction(*out, c0 + 1);
   }
   step.fields["DEPL"] = out;
 }

@@ -28,9 +28,11 @@
 // Fields: LAGS_C in DEPL on one node per patch (the node shared by the most of its slave cells:
 // the centre of a 3D fan, the middle of an edge cut in two; the middle node of a SEG3 patch), and
 // CONT_ELEM (mortar/ContElemField.hpp). No CONT_NOEU (code_aster writes none for LAC).
+// Friction (FROTTEMENT='COULOMB', 2D, beyond code_aster): LacFriction.cpp.
 
 #include "solver/contact/ContactDefinition.hpp"
 #include "solver/contact/lac/LacPairing.hpp"
+#include "solver/database/Field.hpp"
 #include "solver/fem/Modelling.hpp"
 #include "solver/nonlinear/StepConstraint.hpp"
 
@@ -73,7 +75,30 @@ private:
   bool statusSettled(const Eigen::VectorXd& u);
   bool geometrySettled(const Eigen::VectorXd& u);
   double geometricResidual(const Eigen::VectorXd& u) const;
-  [[noreturn]] void redundant(std::size_t patch) const;
+  [[noreturn]] void redundant(std::size_t patch, bool slip) const;
+  struct SchurRow {
+    std::size_t patch = 0;
+    bool slip = false; // the mean slip of a sticking patch, else its mean gap
+  };
+  void eliminate(const Eigen::VectorXd& u, Eigen::VectorXd& ddu, Eigen::VectorXd& dlambda,
+                 SaddleSolver& solver, const std::vector<SchurRow>& rows);
+  void applyMultipliers(const Eigen::VectorXd& y, Eigen::VectorXd& ddu, Eigen::VectorXd& dlambda,
+                        SaddleSolver& solver, const std::vector<SchurRow>& rows,
+                        const std::vector<std::map<int, double>>& columns);
+
+  // Friction (FROTTEMENT='COULOMB', 2D; LacFriction.cpp). Status per patch: 0 open, 1 contact (and
+  // sticking with friction), 2 contact sliding.
+  bool friction() const { return definition_->hasFriction(); }
+  double slipAt(std::size_t p, const Eigen::VectorXd& u) const; // mean slip since the step's start
+  double frictionLimit(std::size_t p) const;                    // mu |lambda_P|
+  char contactCode(std::size_t p, const Eigen::VectorXd& u) const;
+  double tangentialPressure(std::size_t p, char s, const Eigen::VectorXd& u) const;
+  // -mu sign(q) for a patch sliding with friction (the factor of dS_P in its pressure's column), else 0
+  double slidingCoupling(std::size_t p, const Eigen::VectorXd& u) const;
+  void addFrictionForces(std::size_t p, char s, const Eigen::VectorXd& u, Eigen::VectorXd& forces,
+                         std::vector<Eigen::Triplet<double>>* tangent) const;
+  bool frictionSettled();
+  void storeFriction(Field& out, std::size_t c0) const;
 
   std::shared_ptr<const ContactDefinition> definition_;
   const DofMap& dofs_;
@@ -87,6 +112,11 @@ private:
   Eigen::VectorXd uStart_;
   double time_ = 0.0;
   double rho_ = 100.0;
+  double rhoT_ = 100.0;             // the friction augmentation (no COEF_FROT for LAC zones)
+  std::vector<double> lagsT_;       // per patch: tangential pressure along tau (LacPairing.hpp)
+  std::vector<double> lagsTStart_;  // per patch
+  std::vector<double> limitBefore_; // per patch: mu |lambda_P| before and after the last correction
+  std::vector<double> limitAfter_;
   std::vector<double> lagsC_;      // per patch
   std::vector<double> lagsCStart_; // per patch
   std::vector<char> status_;       // per patch, in use

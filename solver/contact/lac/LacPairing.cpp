@@ -63,7 +63,7 @@ void addGradient(std::map<int, double>& g, const DofMap& dofs, NodeId n, const P
 
 void pairZone(const Mesh& mesh, const LacZoneCells& zone, const std::vector<double>& u, const DofMap& dofs,
               const LacPairingOptions& options, std::vector<LacPatchRow>& rows,
-              std::vector<std::map<int, double>>& gradients) {
+              std::vector<std::map<int, double>>& gradients, std::vector<std::map<int, double>>& slips) {
   std::vector<Segment> masters;
   std::vector<Box3> masterBoxes;
   for (CellId c : zone.masters) {
@@ -109,13 +109,17 @@ void pairZone(const Mesh& mesh, const LacZoneCells& zone, const std::vector<doub
         row.pairedLength += w;
         row.integratedGap += w * gap;
         auto& grad = gradients[static_cast<std::size_t>(sc.patch)];
+        auto& slip = slips[static_cast<std::size_t>(sc.patch)];
+        const Point2 tau = {-n[1], n[0]};
         const auto ns = shape(current.type, q.slaveXi);
         for (std::size_t i = 0; i < slaveNodes.size(); ++i) {
           addGradient(grad, dofs, slaveNodes[i], n, -w * ns[i]);
+          addGradient(slip, dofs, slaveNodes[i], tau, w * ns[i]);
         }
         const auto nm = shape(m.type, q.masterXi);
         for (std::size_t j = 0; j < masterNodes.size(); ++j) {
           addGradient(grad, dofs, masterNodes[j], n, w * nm[j]);
+          addGradient(slip, dofs, masterNodes[j], tau, -w * nm[j]);
         }
       }
     }
@@ -163,17 +167,19 @@ std::vector<LacPatchRow> pairLacPatches(const Mesh& mesh, const std::vector<LacZ
                                         const LacPairingOptions& options) {
   std::vector<LacPatchRow> rows(mesh.lacPatches().size());
   std::vector<std::map<int, double>> gradients(rows.size());
+  std::vector<std::map<int, double>> slips(rows.size());
   for (const auto& zone : zones) {
     const bool faces = !zone.slaves.empty() && mesh.cellType(zone.slaves.front().cell) != CellType::SEG2 &&
                        mesh.cellType(zone.slaves.front().cell) != CellType::SEG3;
     if (faces) {
       pairZone3d(mesh, zone, displacement, dofs, rows, gradients);
     } else {
-      pairZone(mesh, zone, displacement, dofs, options, rows, gradients);
+      pairZone(mesh, zone, displacement, dofs, options, rows, gradients, slips);
     }
   }
   for (std::size_t p = 0; p < rows.size(); ++p) {
     rows[p].gradient.assign(gradients[p].begin(), gradients[p].end());
+    rows[p].slipGradient.assign(slips[p].begin(), slips[p].end());
   }
   return rows;
 }

@@ -45,6 +45,9 @@ struct LacPatchRow {
   double pairedLength = 0.0;  // L_P
   double integratedGap = 0.0; // G_P
   std::vector<std::pair<int, double>> gradient; // dG_P on the physical equations (merged)
+  // dS_P = sum w_q tau . (N_s du_s - N_m du_m), tau = n_s turned by +90 degrees (2D only; empty in
+  // 3D): the slip of the slave on the master integrated over the overlaps (LacFriction.cpp)
+  std::vector<std::pair<int, double>> slipGradient;
 };
 
 struct LacPairingOptions {

@@ -101,9 +101,18 @@ TEST(LacContact, WhatIsNotImplementedIsRefusedNamingIt) {
     std::string named;
   } cases[] = {
       {{false, true, ", LISSAGE='OUI'", "", ""}, "CONTACT_20", "LISSAGE='OUI' with ALGO_CONT='LAC'"},
-      {{false, true, ", FROTTEMENT='COULOMB'", ", COULOMB=0.1", ""},
+      {{true, true, ", FROTTEMENT='COULOMB'", ", COULOMB=0.1", ""},
        "CONTACT_20",
-       "FROTTEMENT='COULOMB' with ALGO_CONT='LAC'"},
+       "FROTTEMENT='COULOMB' with ALGO_CONT='LAC' in 3D"},
+      {{false, true, ", FROTTEMENT='COULOMB', ALGO_RESO_FROT='POINT_FIXE'", ", COULOMB=0.1", ""},
+       "CONTACT_20",
+       "ALGO_RESO_FROT='POINT_FIXE' with ALGO_CONT='LAC'"},
+      {{false, true, ", FROTTEMENT='COULOMB'", ", COULOMB=0.1, ALGO_FROT='PENALISATION'", ""},
+       "CONTACT_20",
+       "ALGO_FROT='PENALISATION' with ALGO_CONT='LAC'"},
+      {{false, true, ", FROTTEMENT='COULOMB'", ", COULOMB=0.1, SEUIL_INIT=1.0", ""},
+       "CONTACT_20",
+       "SEUIL_INIT with ALGO_CONT='LAC'"},
       {{false, false, "", "", ""}, "CONTACT_LAC_1", "carries no LAC patch"},
       {{false, true, "", ", RESI_APPA=1e-6", ""}, "CATALOG_17", "RESI_APPA"},
   };

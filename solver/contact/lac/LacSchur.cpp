@@ -1,0 +1,117 @@
+// The Schur complement of the LAC multipliers in contact and in stick (LacContactConstraint.hpp,
+// LacFriction.cpp).
+
+#include "solver/contact/lac/LacContactConstraint.hpp"
+
+#include "solver/nonlinear/SaddleSolver.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace stella::contact::lac {
+
+// Eliminates the multipliers of `rows` (B = dG_P / L_P or dS_P / L_P, y = L_P dlambda) by their
+// Schur complement. Force columns the same, but for the pressure of a patch sliding with friction:
+// its friction force -mu |lambda_P| sign(q) dS_P follows lambda_P, the column (dG_P - mu sign(q)
+// dS_P) / L_P, and the (small, dense) Schur complement is non-symmetric (LU).
+void LacContactConstraint::eliminate(const Eigen::VectorXd& u, Eigen::VectorXd& ddu, Eigen::VectorXd& dlambda,
+                                     SaddleSolver& solver, const std::vector<SchurRow>& rows) {
+  const auto gradientOf = [this](const SchurRow& r) -> const std::vector<std::pair<int, double>>& {
+    return r.slip ? rows_[r.patch].slipGradient : rows_[r.patch].gradient;
+  };
+  const auto mc = static_cast<Eigen::Index>(rows.size());
+  const Eigen::Index n = ddu.size();
+  std::vector<std::map<int, double>> columns(rows.size());
+  bool symmetric = true;
+  for (std::size_t j = 0; j < rows.size(); ++j) {
+    const SchurRow& r = rows[j];
+    for (const auto& [e, v] : gradientOf(r)) {
+      columns[j][e] += v;
+    }
+    const double slide = r.slip ? 0.0 : slidingCoupling(r.patch, u);
+    if (slide != 0.0) {
+      symmetric = false;
+      for (const auto& [e, v] : rows_[r.patch].slipGradient) {
+        columns[j][e] += slide * v;
+      }
+    }
+  }
+  constexpr Eigen::Index block = 64;
+  Eigen::MatrixXd s = Eigen::MatrixXd::Zero(mc, mc);
+  for (Eigen::Index first = 0; first < mc; first += block) {
+    const Eigen::Index cols = std::min(block, mc - first);
+    Eigen::MatrixXd x = Eigen::MatrixXd::Zero(n, cols);
+    for (Eigen::Index j = 0; j < cols; ++j) {
+      const auto k = static_cast<std::size_t>(first + j);
+      const double length = rows_[rows[k].patch].pairedLength;
+      for (const auto& [e, v] : columns[k]) {
+        x(e, j) += v / length;
+      }
+    }
+    solver.solveHomogeneous(x);
+    for (Eigen::Index i = 0; i < mc; ++i) {
+      const SchurRow& r = rows[static_cast<std::size_t>(i)];
+      const double length = rows_[r.patch].pairedLength;
+      for (const auto& [e, v] : gradientOf(r)) {
+        s.row(i).segment(first, cols) += (v / length) * x.row(e);
+      }
+    }
+  }
+  Eigen::VectorXd rhs(mc);
+  for (Eigen::Index i = 0; i < mc; ++i) {
+    const SchurRow& r = rows[static_cast<std::size_t>(i)];
+    double bdu = 0.0;
+    for (const auto& [e, v] : gradientOf(r)) {
+      bdu += v * ddu(e);
+    }
+    rhs(i) = (r.slip ? slipAt(r.patch, u) : gapAt(r.patch, u)) + bdu / rows_[r.patch].pairedLength;
+  }
+  if (!symmetric) {
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(s);
+    if (!lu.isInvertible()) {
+      redundant(rows.front().patch, rows.front().slip);
+    }
+    applyMultipliers(lu.solve(rhs), ddu, dlambda, solver, rows, columns);
+    return;
+  }
+  const Eigen::LDLT<Eigen::MatrixXd> ldlt(0.5 * (s + s.transpose()));
+  const Eigen::VectorXd d = ldlt.vectorD();
+  const double scale = d.cwiseAbs().maxCoeff();
+  for (Eigen::Index p = 0; p < mc; ++p) {
+    if (!(std::fabs(d(p)) > 1e-12 * scale)) {
+      const Eigen::PermutationMatrix<Eigen::Dynamic> perm(ldlt.transpositionsP());
+      const Eigen::PermutationMatrix<Eigen::Dynamic> inverse(perm.inverse());
+      const SchurRow& r = rows[static_cast<std::size_t>(inverse.indices()(p))];
+      redundant(r.patch, r.slip);
+    }
+  }
+  applyMultipliers(ldlt.solve(rhs), ddu, dlambda, solver, rows, columns);
+}
+
+void LacContactConstraint::applyMultipliers(const Eigen::VectorXd& y, Eigen::VectorXd& ddu,
+                                            Eigen::VectorXd& dlambda, SaddleSolver& solver,
+                                            const std::vector<SchurRow>& rows,
+                                            const std::vector<std::map<int, double>>& columns) {
+  const Eigen::Index n = ddu.size();
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
+  for (std::size_t j = 0; j < rows.size(); ++j) {
+    const SchurRow& r = rows[j];
+    const double length = rows_[r.patch].pairedLength;
+    const auto jj = static_cast<Eigen::Index>(j);
+    for (const auto& [e, v] : columns[j]) {
+      f(e) += y(jj) * v / length;
+    }
+    (r.slip ? lagsT_ : lagsC_)[r.patch] += y(jj) / length;
+  }
+  Eigen::VectorXd dx;
+  Eigen::VectorXd dy;
+  solver.solve(f, Eigen::VectorXd::Zero(dlambda.size()), Eigen::VectorXd::Zero(n), dx, dy);
+  ddu -= dx;
+  if (dy.size() == dlambda.size()) {
+    dlambda -= dy;
+  }
+}
+
+} // namespace stella::contact::lac
