@@ -318,9 +318,8 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
       continue;
     }
     Eigen::Vector2d coupling = Eigen::Vector2d::Zero();
-    if (newtonFriction && status[k] == 2 && lagsC_[k] < 0.0) {
-      const Eigen::Vector2d q = indicator(i, slip.row(i).transpose());
-      coupling = q.norm() > 0.0 ? Eigen::Vector2d(-coulombOfRow(i) / q.norm() * q) : coupling;
+    if (newtonFriction && status[k] >= 2 && lagsC_[k] < 0.0) {
+      coupling = -coulombOfRow(i) * slidingDirection(i, status[k], slip.row(i).transpose());
     }
     contact.push_back({i, -1, coupling});
     if (friction() && status[k] == 1 && !zoneOfRow(i).frictionPenalised) {
@@ -524,8 +523,10 @@ void ContinuousContactConstraint::accepted(const std::vector<LinkState>& rowStat
                      : 0; // GLISSIERE: held closed from now on
     if (friction()) {
       acceptFrictionState(static_cast<Eigen::Index>(i), rowStates[i]);
-      // the next step starts sliding, or sticking
-      contactLink_[k] = rowStates[i].status == LinkStatus::Sliding ? 2 : contactLink_[k];
+      // the next step starts sliding (in the same sense along a single friction direction), or
+      // sticking
+      const bool backwards = slidingSenseInStatus(static_cast<Eigen::Index>(i)) && lagsF_[k](0) < 0.0;
+      contactLink_[k] = rowStates[i].status == LinkStatus::Sliding ? (backwards ? 3 : 2) : contactLink_[k];
     }
   }
   lagsCStart_ = lagsC_;

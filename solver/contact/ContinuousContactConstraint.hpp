@@ -119,7 +119,15 @@ private:
   // The indicator q = base + rho_t s (STANDARD: base the multiplier; PENALISATION: the tangential
   // pressure at the start of the step).
   Eigen::Vector2d indicator(Eigen::Index row, const Eigen::Vector2d& slip) const;
+  // 0 open, 1 sticking, 2 sliding (along q / |q|), 3 (ALGO_RESO_CONT='POINT_FIXE' only) sliding
+  // backwards along the only friction direction of a row that has one (2D, AXIS): the statuses
+  // frozen between status loops then also freeze the sliding sense, and a sign change of q is a
+  // status change, instead of a force that flips within the Newton iterations (it has no tangent:
+  // Newton cycled between the two senses, the step was cut, the penalised stick took another path)
   char frictionStatus(Eigen::Index row, const Eigen::Vector2d& slip) const;
+  bool slidingSenseInStatus(Eigen::Index row) const;
+  // The unit sliding direction of a row with status s >= 2 (friction directions; zero if none).
+  Eigen::Vector2d slidingDirection(Eigen::Index row, char s, const Eigen::Vector2d& slip) const;
   // The tangential pressure of a row in contact with status s at slip `slip` (friction directions).
   Eigen::Vector2d tangentialPressure(Eigen::Index row, char s, const Eigen::Vector2d& slip) const;
   void addFrictionForces(Eigen::Index row, char s, const Eigen::Vector2d& slip, Eigen::VectorXd& forces,

@@ -76,8 +76,27 @@ char ContinuousContactConstraint::frictionStatus(Eigen::Index row, const Eigen::
     return 2; // friction excluded on every direction (SANS_GROUP_NO_FR): slides freely
   }
   const double limit = coulombOfRow(row) * thresholdPressure(k);
-  // a zero threshold (no pressure yet) slides with no force
-  return indicator(row, slip).norm() < limit ? 1 : 2;
+  // a zero threshold (no pressure yet) slides with no force, whatever the sign: a status from the
+  // sign of a round-off slip would flip-flop
+  const Eigen::Vector2d q = indicator(row, slip);
+  if (q.norm() < limit) {
+    return 1;
+  }
+  return slidingSenseInStatus(row) && q(0) < 0.0 && limit > 0.0 ? 3 : 2;
+}
+
+bool ContinuousContactConstraint::slidingSenseInStatus(Eigen::Index row) const {
+  return frictionDirections(row) == 1 && definition_->settings.continuous.statusLoop != StatusLoop::Newton;
+}
+
+Eigen::Vector2d ContinuousContactConstraint::slidingDirection(Eigen::Index row, char s,
+                                                              const Eigen::Vector2d& slip) const {
+  if (slidingSenseInStatus(row)) {
+    return {s == 3 ? -1.0 : 1.0, 0.0}; // the sense is the status's
+  }
+  const Eigen::Vector2d q = indicator(row, slip);
+  const double size = q.norm();
+  return size > 0.0 ? Eigen::Vector2d(q / size) : Eigen::Vector2d::Zero();
 }
 
 Eigen::Vector2d ContinuousContactConstraint::tangentialPressure(Eigen::Index row, char s,
@@ -86,12 +105,12 @@ Eigen::Vector2d ContinuousContactConstraint::tangentialPressure(Eigen::Index row
   if (s == 1) {
     return q;
   }
-  const double size = q.norm();
-  if (s != 2 || size <= 0.0) {
+  if (s != 2 && s != 3) {
     return Eigen::Vector2d::Zero();
   }
   const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(row)]);
-  return (coulombOfRow(row) * thresholdPressure(k) / size) * q; // on the disc, along q
+  // on the disc, along q / |q| (one direction: in the status's sense)
+  return coulombOfRow(row) * thresholdPressure(k) * slidingDirection(row, s, slip);
 }
 
 // A sliding row's multiplier is a Newton unknown with the equation lambda_t = mu t e (the return
@@ -200,13 +219,13 @@ void ContinuousContactConstraint::updateSlidingPressures(const Eigen::VectorXd& 
   for (std::size_t i = 0; i < rows_.link.size(); ++i) {
     const auto row = static_cast<Eigen::Index>(i);
     const auto k = static_cast<std::size_t>(rows_.link[i]);
-    if (status[k] != 2 || penalised(row)) {
+    if (status[k] < 2 || penalised(row)) { // 2 sliding, 3 sliding backwards (POINT_FIXE in 2D)
       continue;
     }
     const SlidingNewton& n = newton[i];
     if (!n.active) {
       // mu |lambda_n| q / |q| after the update, at the corrected displacement
-      lagsF_[k] = tangentialPressure(row, 2, slip.row(row).transpose());
+      lagsF_[k] = tangentialPressure(row, status[k], slip.row(row).transpose());
       continue;
     }
     Eigen::Vector2d ds = Eigen::Vector2d::Zero(); // the correction's slip
