@@ -373,6 +373,10 @@ Table Sweep::run() {
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
+  if (stopRequested != 0 && !told && options_.progress != nullptr) {
+    // the signal came between two runs (none under way): said here, the loop ended at once
+    *options_.progress << "\nsweep: interrupted: no new run; writing the table\n";
+  }
   if (options_.progress != nullptr && options_.terminal) {
     *options_.progress << "\n";
   }
