@@ -79,4 +79,22 @@ Field buildContNoeu(std::size_t nodeCount, const std::vector<ContactLink>& links
   return field;
 }
 
+std::shared_ptr<Field> withMultiplierComponents(const Field& depl, const std::vector<std::string>& extra) {
+  std::vector<std::string> components = depl.components();
+  components.insert(components.end(), extra.begin(), extra.end());
+  const std::size_t nodes = depl.entityCount();
+  const std::size_t c0 = depl.componentCount();
+  auto out = std::make_shared<Field>(Field::nodal(depl.quantity(), components, nodes));
+  out->markPartial();
+  for (std::size_t n = 0; n < nodes; ++n) {
+    for (std::size_t c = 0; c < c0; ++c) {
+      out->value(n, c) = depl.value(n, c);
+      if (depl.defined(n, c)) {
+        out->setDefined(n, c);
+      }
+    }
+  }
+  return out;
+}
+
 } // namespace stella::contact

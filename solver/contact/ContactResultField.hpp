@@ -19,6 +19,7 @@
 #include "solver/database/Field.hpp"
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace stella::contact {
@@ -41,5 +42,9 @@ Field buildContNoeu(std::size_t nodeCount, const std::vector<ContactLink>& links
 
 // Gap-only states (RESOLUTION='NON'): the pairing's gaps, no forces.
 std::vector<LinkState> measuredGaps(const std::vector<ContactLink>& links);
+
+// DEPL with the multiplier components `extra` appended (LAGS_C, LAGS_F1...), undefined until the
+// caller fills them: the displacement values and their support copied, the field partial.
+std::shared_ptr<Field> withMultiplierComponents(const Field& depl, const std::vector<std::string>& extra);
 
 } // namespace stella::contact

@@ -2,6 +2,7 @@
 // friction part is in ContinuousContactFriction.cpp.
 
 #include "solver/contact/ContinuousContactConstraint.hpp"
+#include "solver/contact/ContactResultField.hpp"
 #include "solver/contact/ContinuousIntegrationRule.hpp"
 
 #include "solver/database/Result.hpp"
@@ -544,26 +545,16 @@ void ContinuousContactConstraint::store(ResultStep& step) const {
   if (depl.componentIndex("LAGS_C")) {
     return;
   }
-  std::vector<std::string> components = depl.components();
-  components.push_back("LAGS_C");
+  std::vector<std::string> extra;
+  extra.push_back("LAGS_C");
   if (friction()) {
-    components.push_back("LAGS_F1");
+    extra.push_back("LAGS_F1");
     if (rows_.friction.T2.rows() > 0) {
-      components.push_back("LAGS_F2");
+      extra.push_back("LAGS_F2");
     }
   }
-  const std::size_t nodes = depl.entityCount();
   const std::size_t c0 = depl.componentCount();
-  auto out = std::make_shared<Field>(Field::nodal(depl.quantity(), components, nodes));
-  out->markPartial();
-  for (std::size_t n = 0; n < nodes; ++n) {
-    for (std::size_t c = 0; c < c0; ++c) {
-      out->value(n, c) = depl.value(n, c);
-      if (depl.defined(n, c)) {
-        out->setDefined(n, c);
-      }
-    }
-  }
+  const auto out = withMultiplierComponents(depl, extra);
   for (std::size_t k = 0; k < links_.size(); ++k) {
     if (!resolvedZone_[static_cast<std::size_t>(links_[k].zone)]) {
       continue;

@@ -3,6 +3,7 @@
 #include "solver/contact/ContinuousPointContact.hpp"
 
 #include "solver/contact/CellProjection.hpp"
+#include "solver/contact/ContactResultField.hpp"
 #include "solver/contact/ContinuousIntegrationRule.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/fem/ReferenceElement.hpp"
@@ -393,20 +394,10 @@ void ContinuousPointContactConstraint::store(ResultStep& step) const {
   if (depl.componentIndex("LAGS_C")) {
     return;
   }
-  std::vector<std::string> components = depl.components();
-  components.push_back("LAGS_C");
-  const std::size_t nodes = depl.entityCount();
+  std::vector<std::string> extra;
+  extra.push_back("LAGS_C");
   const std::size_t c0 = depl.componentCount();
-  auto out = std::make_shared<Field>(Field::nodal(depl.quantity(), components, nodes));
-  out->markPartial();
-  for (std::size_t n = 0; n < nodes; ++n) {
-    for (std::size_t c = 0; c < c0; ++c) {
-      out->value(n, c) = depl.value(n, c);
-      if (depl.defined(n, c)) {
-        out->setDefined(n, c);
-      }
-    }
-  }
+  const auto out = withMultiplierComponents(depl, extra);
   for (std::size_t i = 0; i < multiplierNode_.size(); ++i) {
     const auto n = static_cast<std::size_t>(multiplierNode_[i]);
     out->value(n, c0) = lambda_[i];

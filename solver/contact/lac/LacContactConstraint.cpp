@@ -3,6 +3,7 @@
 
 #include "solver/contact/lac/LacContactConstraint.hpp"
 
+#include "solver/contact/ContactResultField.hpp"
 #include "solver/contact/ContactRows.hpp"
 #include "solver/contact/mortar/ContElemField.hpp"
 #include "solver/database/Result.hpp"
@@ -479,23 +480,13 @@ void LacContactConstraint::store(ResultStep& step) const {
   if (depl.componentIndex("LAGS_C")) {
     return;
   }
-  std::vector<std::string> components = depl.components();
-  components.push_back("LAGS_C");
+  std::vector<std::string> extra;
+  extra.push_back("LAGS_C");
   if (friction()) {
-    components.push_back("LAGS_F1");
+    extra.push_back("LAGS_F1");
   }
-  const std::size_t nodes = depl.entityCount();
   const std::size_t c0 = depl.componentCount();
-  auto out = std::make_shared<Field>(Field::nodal(depl.quantity(), components, nodes));
-  out->markPartial();
-  for (std::size_t n = 0; n < nodes; ++n) {
-    for (std::size_t c = 0; c < c0; ++c) {
-      out->value(n, c) = depl.value(n, c);
-      if (depl.defined(n, c)) {
-        out->setDefined(n, c);
-      }
-    }
-  }
+  const auto out = withMultiplierComponents(depl, extra);
   for (std::size_t p = 0; p < patchNode_.size(); ++p) {
     if (patchNode_[p] >= 0) {
       const auto n = static_cast<std::size_t>(patchNode_[p]);
