@@ -1,6 +1,7 @@
 // MUMPS backend (sequential library, double precision C interface).
 
 #include "solver/linalg/Backends.hpp"
+#include "solver/linalg/MumpsCoordinates.hpp"
 
 #include <dmumps_c.h>
 
@@ -99,15 +100,7 @@ public:
       throw LinearSolverError("MUMPS: matrix storage does not match the matrix kind");
     }
     const SparsePattern& p = a.pattern();
-    irn_.resize(static_cast<std::size_t>(p.nonZeros()));
-    jcn_.resize(irn_.size());
-    for (int i = 0; i < p.size; ++i) {
-      for (auto k = p.rowStart[static_cast<std::size_t>(i)]; k < p.rowStart[static_cast<std::size_t>(i) + 1];
-           ++k) {
-        irn_[static_cast<std::size_t>(k)] = i + 1;
-        jcn_[static_cast<std::size_t>(k)] = p.columns[static_cast<std::size_t>(k)] + 1;
-      }
-    }
+    mumpsCoordinates(p, irn_, jcn_);
     id_.n = p.size;
     id_.nnz = p.nonZeros();
     id_.irn = irn_.data();

@@ -5,6 +5,7 @@
 // rebuilds it (code_aster's REAC_PRECOND). Symmetric positive definite matrices only.
 
 #include "solver/linalg/Backends.hpp"
+#include "solver/linalg/MumpsCoordinates.hpp"
 
 #include <smumps_c.h>
 
@@ -61,15 +62,7 @@ public:
       throw LinearSolverError("GCPC LDLT_SP: needs upper-triangle storage");
     }
     const SparsePattern& p = a.pattern();
-    irn_.resize(static_cast<std::size_t>(p.nonZeros()));
-    jcn_.resize(irn_.size());
-    for (int i = 0; i < p.size; ++i) {
-      for (auto k = p.rowStart[static_cast<std::size_t>(i)]; k < p.rowStart[static_cast<std::size_t>(i) + 1];
-           ++k) {
-        irn_[static_cast<std::size_t>(k)] = i + 1;
-        jcn_[static_cast<std::size_t>(k)] = p.columns[static_cast<std::size_t>(k)] + 1;
-      }
-    }
+    mumpsCoordinates(p, irn_, jcn_);
     id_.n = p.size;
     id_.nnz = p.nonZeros();
     id_.irn = irn_.data();
