@@ -110,9 +110,8 @@ void refuse(const std::vector<contact::Unimplemented>& refused) {
 // FROTTEMENT='COULOMB' with ALGO_CONT='LAC' (lac/LacFriction.cpp): 2D and 3D, ALGO_FROT='STANDARD',
 // ALGO_RESO_FROT='NEWTON', no SEUIL_INIT nor SANS_GROUP_NO_FR.
 void refuseLacFriction(const ContactDefinition& def) {
-  const std::string note =
-      "LAC friction (beyond code_aster) is implemented with ALGO_FROT='STANDARD' and "
-      "ALGO_RESO_FROT='NEWTON'; use ALGO_CONT='STANDARD' for the rest";
+  const std::string note = "LAC friction (beyond code_aster) is implemented with ALGO_FROT='STANDARD' and "
+                           "ALGO_RESO_FROT='NEWTON'; use ALGO_CONT='STANDARD' for the rest";
   if (def.settings.continuous.frictionFixedPoint) {
     notImplemented("ALGO_RESO_FROT='POINT_FIXE' with ALGO_CONT='LAC'", def.settings.frictionAt, note);
   }

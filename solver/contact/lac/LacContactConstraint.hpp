@@ -94,9 +94,9 @@ private:
   using Tangential = std::array<double, 2>;
   bool friction() const { return definition_->hasFriction(); }
   std::size_t directions() const { return directions_; }
-  Tangential slipAt(std::size_t p, const Eigen::VectorXd& u) const; // mean slip since the step's start
+  Tangential slipAt(std::size_t p, const Eigen::VectorXd& u) const;    // mean slip since the step's start
   Tangential indicator(std::size_t p, const Eigen::VectorXd& u) const; // q = lambda_t + rho_t s
-  double frictionLimit(std::size_t p) const;                          // mu |lambda_P|
+  double frictionLimit(std::size_t p) const;                           // mu |lambda_P|
   char contactCode(std::size_t p, const Eigen::VectorXd& u) const;
   Tangential tangentialPressure(std::size_t p, char s, const Eigen::VectorXd& u) const;
   // -mu q/|q| for a patch sliding with friction (the factors of dS_P,a in its pressure's column), else 0
@@ -118,11 +118,11 @@ private:
   Eigen::VectorXd uStart_;
   double time_ = 0.0;
   double rho_ = 100.0;
-  double rhoT_ = 100.0;             // the friction augmentation (no COEF_FROT for LAC zones)
-  std::size_t directions_ = 1;      // tangent directions: 1 in 2D, 2 in 3D
-  std::vector<Tangential> lagsT_;   // per patch: tangential pressure along tau_a (LacPairing.hpp)
+  double rhoT_ = 100.0;                // the friction augmentation (no COEF_FROT for LAC zones)
+  std::size_t directions_ = 1;         // tangent directions: 1 in 2D, 2 in 3D
+  std::vector<Tangential> lagsT_;      // per patch: tangential pressure along tau_a (LacPairing.hpp)
   std::vector<Tangential> lagsTStart_; // per patch
-  std::vector<double> limitBefore_; // per patch: mu |lambda_P| before and after the last correction
+  std::vector<double> limitBefore_;    // per patch: mu |lambda_P| before and after the last correction
   std::vector<double> limitAfter_;
   std::vector<double> lagsC_;      // per patch
   std::vector<double> lagsCStart_; // per patch

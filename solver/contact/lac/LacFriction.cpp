@@ -33,7 +33,8 @@ LacContactConstraint::Tangential LacContactConstraint::slipAt(std::size_t p, con
   return s;
 }
 
-LacContactConstraint::Tangential LacContactConstraint::indicator(std::size_t p, const Eigen::VectorXd& u) const {
+LacContactConstraint::Tangential LacContactConstraint::indicator(std::size_t p,
+                                                                 const Eigen::VectorXd& u) const {
   const Tangential s = slipAt(p, u);
   return {lagsT_[p][0] + rhoT_ * s[0], lagsT_[p][1] + rhoT_ * s[1]};
 }
