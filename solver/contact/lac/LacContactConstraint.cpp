@@ -287,16 +287,16 @@ void LacContactConstraint::correct(const Eigen::VectorXd& u, Eigen::VectorXd& dd
       limitBefore_[p] = frictionLimit(p);
     }
   }
+  std::vector<SlidingNewton> sliding(rows_.size());
+  for (std::size_t p = 0; friction() && p < rows_.size(); ++p) {
+    sliding[p] = slidingNewton(p, status[p], u); // linearised before the correction
+  }
   ++eliminations_;
   if (!rows.empty()) {
     eliminate(u, ddu, dlambda, solver, rows);
   }
   if (friction()) {
-    for (std::size_t p = 0; p < rows_.size(); ++p) {
-      if (status[p] == 2) {
-        lagsT_[p] = tangentialPressure(p, 2, u); // on the threshold of the corrected LAGS_C
-      }
-    }
+    updateSlidingPressures(u, ddu, status, sliding);
     limitAfter_.resize(rows_.size());
     for (std::size_t p = 0; p < rows_.size(); ++p) {
       limitAfter_[p] = frictionLimit(p);

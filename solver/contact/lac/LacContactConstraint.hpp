@@ -103,6 +103,17 @@ private:
   Tangential slidingCoupling(std::size_t p, const Eigen::VectorXd& u) const;
   void addFrictionForces(std::size_t p, char s, const Eigen::VectorXd& u, Eigen::VectorXd& forces,
                          std::vector<Eigen::Triplet<double>>* tangent) const;
+  // 3D sliding: the tangential multiplier as a Newton unknown (LacFriction.cpp), linearised at u.
+  struct SlidingNewton {
+    bool active = false;
+    Tangential e{0.0, 0.0}; // the sliding direction q / |q|
+    double beta = 0.0;      // mu |lambda| / (|q| - mu |lambda|)
+    Tangential r{0.0, 0.0}; // lambda_t - mu |lambda| e, the equation's residual
+  };
+  SlidingNewton slidingNewton(std::size_t p, char s, const Eigen::VectorXd& u) const;
+  // After a correction ddu at u: the tangential multipliers of the sliding patches.
+  void updateSlidingPressures(const Eigen::VectorXd& u, const Eigen::VectorXd& ddu,
+                              const std::vector<char>& status, const std::vector<SlidingNewton>& newton);
   bool frictionSettled();
   void storeFriction(Field& out, std::size_t c0) const;
 

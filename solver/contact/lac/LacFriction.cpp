@@ -87,17 +87,81 @@ LacContactConstraint::Tangential LacContactConstraint::slidingCoupling(std::size
   return {-mu * q[0] / size, -mu * q[1] / size};
 }
 
+// A sliding patch's tangential multiplier is a Newton unknown (3D) with the equation
+// lambda_t = mu t e (the return map on the Coulomb disc, t = |LAGS_C|, e = q / |q|), condensed as
+// the continuous formulation's (ContinuousContactFriction.cpp, slidingNewton): with
+// beta = mu t / (|q| - mu t), P = I - e e^T and the residual r = lambda_t - mu t e, the force's
+// pressure is mu t e - beta P r, its tangent beta rho_t / L P (the turn of the direction), and after
+// a correction lambda_t = mu (t + dt) e + beta P (rho_t ds - r) (ds the correction's mean slip).
+// Without it (the multiplier put back on the disc along q after each correction, a fixed point) a
+// turning direction converged by a factor 1 - rho_t |ds| / (mu t) per iteration: lac_friction_3d_turn
+// did not converge. |q| - mu t is floored at 1e-6 |q|. In 2D the direction cannot turn: inactive.
+LacContactConstraint::SlidingNewton LacContactConstraint::slidingNewton(std::size_t p, char s,
+                                                                        const Eigen::VectorXd& u) const {
+  SlidingNewton n;
+  if (s != 2 || directions() != 2) {
+    return n;
+  }
+  const double limit = frictionLimit(p);
+  const Tangential q = indicator(p, u);
+  const double size = length(q);
+  if (!(limit > 0.0) || !(size > 0.0)) {
+    return n;
+  }
+  n.active = true;
+  n.e = {q[0] / size, q[1] / size};
+  n.beta = limit / std::max(size - limit, 1e-6 * size);
+  n.r = {lagsT_[p][0] - limit * n.e[0], lagsT_[p][1] - limit * n.e[1]};
+  return n;
+}
+
+void LacContactConstraint::updateSlidingPressures(const Eigen::VectorXd& u, const Eigen::VectorXd& ddu,
+                                                  const std::vector<char>& status,
+                                                  const std::vector<SlidingNewton>& newton) {
+  for (std::size_t p = 0; p < rows_.size(); ++p) {
+    if (status[p] != 2) {
+      continue;
+    }
+    const SlidingNewton& n = newton[p];
+    if (!n.active) {
+      lagsT_[p] = tangentialPressure(p, 2, u); // on the threshold of the corrected LAGS_C
+      continue;
+    }
+    const LacPatchRow& r = rows_[p];
+    Tangential v{0.0, 0.0}; // rho_t ds - r
+    for (std::size_t a = 0; a < 2; ++a) {
+      double ds = 0.0;
+      for (const auto& [e, g] : r.slipGradients[a]) {
+        ds += g * ddu(e);
+      }
+      v[a] = rhoT_ * ds / r.pairedLength - n.r[a];
+    }
+    const double along = n.e[0] * v[0] + n.e[1] * v[1];
+    const double limit = frictionLimit(p);
+    for (std::size_t a = 0; a < 2; ++a) {
+      lagsT_[p][a] = limit * n.e[a] + n.beta * (v[a] - n.e[a] * along);
+    }
+  }
+}
+
 // Forces -sum_a t_a dS_a. Tangent: sticking, rho_t / L sum_a dS_a dS_a^T; sliding, the turning of
-// the direction q/|q| on the disc, mu |lambda| rho_t / (|q| L) sum_ab (delta_ab - qhat_a qhat_b)
-// dS_a dS_b^T (zero in 2D, where the direction cannot turn). Every (a, b) pair is written, zeros
+// the direction q/|q| on the disc, beta rho_t / L sum_ab (delta_ab - qhat_a qhat_b) dS_a dS_b^T
+// (zero in 2D, where the direction cannot turn). Every (a, b) pair is written, zeros
 // included, so that the pattern does not depend on the statuses.
 void LacContactConstraint::addFrictionForces(std::size_t p, char s, const Eigen::VectorXd& u,
                                              Eigen::VectorXd& forces,
                                              std::vector<Eigen::Triplet<double>>* tangent) const {
   const LacPatchRow& r = rows_[p];
   const std::size_t nd = std::min(directions(), r.slipGradients.size());
+  const SlidingNewton sliding = slidingNewton(p, s, u);
   if (s != 0) {
-    const Tangential t = tangentialPressure(p, s, u);
+    Tangential t = tangentialPressure(p, s, u);
+    if (sliding.active) { // the condensed multiplier's equation: - beta P r
+      const double along = sliding.e[0] * sliding.r[0] + sliding.e[1] * sliding.r[1];
+      for (std::size_t a = 0; a < 2; ++a) {
+        t[a] -= sliding.beta * (sliding.r[a] - sliding.e[a] * along);
+      }
+    }
     for (std::size_t a = 0; a < nd; ++a) {
       for (const auto& [e, v] : r.slipGradients[a]) {
         forces(e) -= t[a] * v;
@@ -114,7 +178,8 @@ void LacContactConstraint::addFrictionForces(std::size_t p, char s, const Eigen:
     const Tangential q = indicator(p, u);
     const double size = length(q);
     if (size > 0.0) {
-      const double k = frictionLimit(p) * rhoT_ / (size * r.pairedLength);
+      const double factor = sliding.active ? sliding.beta : frictionLimit(p) / size;
+      const double k = factor * rhoT_ / r.pairedLength;
       const double h[2] = {q[0] / size, q[1] / size};
       for (std::size_t a = 0; a < 2; ++a) {
         for (std::size_t b = 0; b < 2; ++b) {
