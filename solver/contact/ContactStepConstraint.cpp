@@ -107,15 +107,11 @@ void refuse(const std::vector<contact::Unimplemented>& refused) {
   }
 }
 
-// FROTTEMENT='COULOMB' with ALGO_CONT='LAC' (lac/LacFriction.cpp): 2D, ALGO_FROT='STANDARD',
+// FROTTEMENT='COULOMB' with ALGO_CONT='LAC' (lac/LacFriction.cpp): 2D and 3D, ALGO_FROT='STANDARD',
 // ALGO_RESO_FROT='NEWTON', no SEUIL_INIT nor SANS_GROUP_NO_FR.
-void refuseLacFriction(const ContactDefinition& def, fem::Modelling modelling) {
-  const std::string note =
-      "LAC friction (beyond code_aster) is implemented in 2D with ALGO_FROT='STANDARD' and "
-      "ALGO_RESO_FROT='NEWTON'; use ALGO_CONT='STANDARD' for the rest";
-  if (modelling == fem::Modelling::ThreeD) {
-    notImplemented("FROTTEMENT='COULOMB' with ALGO_CONT='LAC' in 3D", def.settings.frictionAt, note);
-  }
+void refuseLacFriction(const ContactDefinition& def) {
+  const std::string note = "LAC friction (beyond code_aster) is implemented with ALGO_FROT='STANDARD' and "
+                           "ALGO_RESO_FROT='NEWTON'; use ALGO_CONT='STANDARD' for the rest";
   if (def.settings.continuous.frictionFixedPoint) {
     notImplemented("ALGO_RESO_FROT='POINT_FIXE' with ALGO_CONT='LAC'", def.settings.frictionAt, note);
   }
@@ -146,7 +142,7 @@ std::unique_ptr<StepConstraint> makeLac(std::shared_ptr<const ContactDefinition>
     }
   }
   if (def->hasFriction()) {
-    refuseLacFriction(*def, system.model().modelling);
+    refuseLacFriction(*def);
   }
   if (def->settings.smoothing) {
     notImplemented("LISSAGE='OUI' with ALGO_CONT='LAC'", def->location,

@@ -129,8 +129,9 @@ LacContactConstraint::LacContactConstraint(std::shared_ptr<const ContactDefiniti
   contactEquations_.assign(equations.begin(), equations.end());
   lagsC_.assign(patches.size(), 0.0);
   lagsCStart_ = lagsC_;
-  lagsT_ = lagsC_;
-  lagsTStart_ = lagsC_;
+  directions_ = modelling == fem::Modelling::ThreeD ? 2 : 1;
+  lagsT_.assign(patches.size(), Tangential{0.0, 0.0});
+  lagsTStart_ = lagsT_;
   status_.assign(patches.size(), 0);
   accepted_ = status_;
   uPairing_ = Eigen::VectorXd::Zero(dofs.physicalCount());
@@ -147,7 +148,7 @@ void LacContactConstraint::pairAt(const Eigen::VectorXd& u) {
   for (std::size_t p = 0; p < rows_.size(); ++p) {
     if (!paired(p)) {
       lagsC_[p] = 0.0; // not paired: no contact pressure
-      lagsT_[p] = 0.0;
+      lagsT_[p] = Tangential{0.0, 0.0};
     }
   }
 }
@@ -270,14 +271,14 @@ void LacContactConstraint::correct(const Eigen::VectorXd& u, Eigen::VectorXd& dd
   for (std::size_t p = 0; p < rows_.size(); ++p) {
     if (status[p] == 0) {
       lagsC_[p] = 0.0;
-      lagsT_[p] = 0.0;
+      lagsT_[p] = Tangential{0.0, 0.0};
     } else {
-      rows.push_back({p, false});
+      rows.push_back({p, -1});
     }
   }
   for (std::size_t p = 0; p < rows_.size(); ++p) {
-    if (friction() && status[p] == 1) {
-      rows.push_back({p, true});
+    for (std::size_t a = 0; friction() && status[p] == 1 && a < directions(); ++a) {
+      rows.push_back({p, static_cast<int>(a)});
     }
   }
   if (friction()) {
@@ -286,16 +287,16 @@ void LacContactConstraint::correct(const Eigen::VectorXd& u, Eigen::VectorXd& dd
       limitBefore_[p] = frictionLimit(p);
     }
   }
+  std::vector<SlidingNewton> sliding(rows_.size());
+  for (std::size_t p = 0; friction() && p < rows_.size(); ++p) {
+    sliding[p] = slidingNewton(p, status[p], u); // linearised before the correction
+  }
   ++eliminations_;
   if (!rows.empty()) {
     eliminate(u, ddu, dlambda, solver, rows);
   }
   if (friction()) {
-    for (std::size_t p = 0; p < rows_.size(); ++p) {
-      if (status[p] == 2) {
-        lagsT_[p] = tangentialPressure(p, 2, u); // on the threshold of the corrected LAGS_C
-      }
-    }
+    updateSlidingPressures(u, ddu, status, sliding);
     limitAfter_.resize(rows_.size());
     for (std::size_t p = 0; p < rows_.size(); ++p) {
       limitAfter_[p] = frictionLimit(p);
@@ -399,7 +400,7 @@ bool LacContactConstraint::acceptConvergence(const Eigen::VectorXd& u) {
   for (std::size_t p = 0; p < rows_.size(); ++p) {
     if (accepted_[p] == 0) {
       lagsC_[p] = 0.0;
-      lagsT_[p] = 0.0;
+      lagsT_[p] = Tangential{0.0, 0.0};
     }
   }
   lagsCStart_ = lagsC_;
@@ -484,6 +485,9 @@ void LacContactConstraint::store(ResultStep& step) const {
   extra.push_back("LAGS_C");
   if (friction()) {
     extra.push_back("LAGS_F1");
+    if (directions() == 2) {
+      extra.push_back("LAGS_F2");
+    }
   }
   const std::size_t c0 = depl.componentCount();
   const auto out = withMultiplierComponents(depl, extra);

@@ -28,7 +28,7 @@
 // Fields: LAGS_C in DEPL on one node per patch (the node shared by the most of its slave cells:
 // the centre of a 3D fan, the middle of an edge cut in two; the middle node of a SEG3 patch), and
 // CONT_ELEM (mortar/ContElemField.hpp). No CONT_NOEU (code_aster writes none for LAC).
-// Friction (FROTTEMENT='COULOMB', 2D, beyond code_aster): LacFriction.cpp.
+// Friction (FROTTEMENT='COULOMB', 2D and 3D, beyond code_aster): LacFriction.cpp.
 
 #include "solver/contact/ContactDefinition.hpp"
 #include "solver/contact/lac/LacPairing.hpp"
@@ -36,6 +36,7 @@
 #include "solver/fem/Modelling.hpp"
 #include "solver/nonlinear/StepConstraint.hpp"
 
+#include <array>
 #include <memory>
 
 namespace stella::contact::lac {
@@ -78,7 +79,8 @@ private:
   [[noreturn]] void redundant(std::size_t patch, bool slip) const;
   struct SchurRow {
     std::size_t patch = 0;
-    bool slip = false; // the mean slip of a sticking patch, else its mean gap
+    int direction = -1; // the mean slip along tau_direction of a sticking patch; -1: its mean gap
+    bool slip() const { return direction >= 0; }
   };
   void eliminate(const Eigen::VectorXd& u, Eigen::VectorXd& ddu, Eigen::VectorXd& dlambda,
                  SaddleSolver& solver, const std::vector<SchurRow>& rows);
@@ -86,17 +88,32 @@ private:
                         SaddleSolver& solver, const std::vector<SchurRow>& rows,
                         const std::vector<std::map<int, double>>& columns);
 
-  // Friction (FROTTEMENT='COULOMB', 2D; LacFriction.cpp). Status per patch: 0 open, 1 contact (and
-  // sticking with friction), 2 contact sliding.
+  // Friction (FROTTEMENT='COULOMB', 2D and 3D; LacFriction.cpp). Status per patch: 0 open, 1 contact
+  // (and sticking with friction), 2 contact sliding. Tangential vectors: their components along
+  // tau_1 (and tau_2 in 3D), LacPairing.hpp.
+  using Tangential = std::array<double, 2>;
   bool friction() const { return definition_->hasFriction(); }
-  double slipAt(std::size_t p, const Eigen::VectorXd& u) const; // mean slip since the step's start
-  double frictionLimit(std::size_t p) const;                    // mu |lambda_P|
+  std::size_t directions() const { return directions_; }
+  Tangential slipAt(std::size_t p, const Eigen::VectorXd& u) const;    // mean slip since the step's start
+  Tangential indicator(std::size_t p, const Eigen::VectorXd& u) const; // q = lambda_t + rho_t s
+  double frictionLimit(std::size_t p) const;                           // mu |lambda_P|
   char contactCode(std::size_t p, const Eigen::VectorXd& u) const;
-  double tangentialPressure(std::size_t p, char s, const Eigen::VectorXd& u) const;
-  // -mu sign(q) for a patch sliding with friction (the factor of dS_P in its pressure's column), else 0
-  double slidingCoupling(std::size_t p, const Eigen::VectorXd& u) const;
+  Tangential tangentialPressure(std::size_t p, char s, const Eigen::VectorXd& u) const;
+  // -mu q/|q| for a patch sliding with friction (the factors of dS_P,a in its pressure's column), else 0
+  Tangential slidingCoupling(std::size_t p, const Eigen::VectorXd& u) const;
   void addFrictionForces(std::size_t p, char s, const Eigen::VectorXd& u, Eigen::VectorXd& forces,
                          std::vector<Eigen::Triplet<double>>* tangent) const;
+  // 3D sliding: the tangential multiplier as a Newton unknown (LacFriction.cpp), linearised at u.
+  struct SlidingNewton {
+    bool active = false;
+    Tangential e{0.0, 0.0}; // the sliding direction q / |q|
+    double beta = 0.0;      // mu |lambda| / (|q| - mu |lambda|)
+    Tangential r{0.0, 0.0}; // lambda_t - mu |lambda| e, the equation's residual
+  };
+  SlidingNewton slidingNewton(std::size_t p, char s, const Eigen::VectorXd& u) const;
+  // After a correction ddu at u: the tangential multipliers of the sliding patches.
+  void updateSlidingPressures(const Eigen::VectorXd& u, const Eigen::VectorXd& ddu,
+                              const std::vector<char>& status, const std::vector<SlidingNewton>& newton);
   bool frictionSettled();
   void storeFriction(Field& out, std::size_t c0) const;
 
@@ -112,10 +129,11 @@ private:
   Eigen::VectorXd uStart_;
   double time_ = 0.0;
   double rho_ = 100.0;
-  double rhoT_ = 100.0;             // the friction augmentation (no COEF_FROT for LAC zones)
-  std::vector<double> lagsT_;       // per patch: tangential pressure along tau (LacPairing.hpp)
-  std::vector<double> lagsTStart_;  // per patch
-  std::vector<double> limitBefore_; // per patch: mu |lambda_P| before and after the last correction
+  double rhoT_ = 100.0;                // the friction augmentation (no COEF_FROT for LAC zones)
+  std::size_t directions_ = 1;         // tangent directions: 1 in 2D, 2 in 3D
+  std::vector<Tangential> lagsT_;      // per patch: tangential pressure along tau_a (LacPairing.hpp)
+  std::vector<Tangential> lagsTStart_; // per patch
+  std::vector<double> limitBefore_;    // per patch: mu |lambda_P| before and after the last correction
   std::vector<double> limitAfter_;
   std::vector<double> lagsC_;      // per patch
   std::vector<double> lagsCStart_; // per patch

@@ -63,7 +63,7 @@ void addGradient(std::map<int, double>& g, const DofMap& dofs, NodeId n, const P
 
 void pairZone(const Mesh& mesh, const LacZoneCells& zone, const std::vector<double>& u, const DofMap& dofs,
               const LacPairingOptions& options, std::vector<LacPatchRow>& rows,
-              std::vector<std::map<int, double>>& gradients, std::vector<std::map<int, double>>& slips) {
+              std::vector<std::map<int, double>>& gradients, std::vector<SlipSums>& slips) {
   std::vector<Segment> masters;
   std::vector<Box3> masterBoxes;
   for (CellId c : zone.masters) {
@@ -109,7 +109,7 @@ void pairZone(const Mesh& mesh, const LacZoneCells& zone, const std::vector<doub
         row.pairedLength += w;
         row.integratedGap += w * gap;
         auto& grad = gradients[static_cast<std::size_t>(sc.patch)];
-        auto& slip = slips[static_cast<std::size_t>(sc.patch)];
+        auto& slip = slips[static_cast<std::size_t>(sc.patch)][0];
         const Point2 tau = {-n[1], n[0]};
         const auto ns = shape(current.type, q.slaveXi);
         for (std::size_t i = 0; i < slaveNodes.size(); ++i) {
@@ -167,19 +167,24 @@ std::vector<LacPatchRow> pairLacPatches(const Mesh& mesh, const std::vector<LacZ
                                         const LacPairingOptions& options) {
   std::vector<LacPatchRow> rows(mesh.lacPatches().size());
   std::vector<std::map<int, double>> gradients(rows.size());
-  std::vector<std::map<int, double>> slips(rows.size());
+  std::vector<SlipSums> slips(rows.size());
+  std::size_t directions = 1;
   for (const auto& zone : zones) {
     const bool faces = !zone.slaves.empty() && mesh.cellType(zone.slaves.front().cell) != CellType::SEG2 &&
                        mesh.cellType(zone.slaves.front().cell) != CellType::SEG3;
     if (faces) {
-      pairZone3d(mesh, zone, displacement, dofs, rows, gradients);
+      directions = 2;
+      pairZone3d(mesh, zone, displacement, dofs, rows, gradients, slips);
     } else {
       pairZone(mesh, zone, displacement, dofs, options, rows, gradients, slips);
     }
   }
   for (std::size_t p = 0; p < rows.size(); ++p) {
     rows[p].gradient.assign(gradients[p].begin(), gradients[p].end());
-    rows[p].slipGradient.assign(slips[p].begin(), slips[p].end());
+    rows[p].slipGradients.resize(directions);
+    for (std::size_t a = 0; a < directions; ++a) {
+      rows[p].slipGradients[a].assign(slips[p][a].begin(), slips[p][a].end());
+    }
   }
   return rows;
 }

@@ -19,6 +19,7 @@
 #include "solver/contact/mortar/MortarSegments.hpp"
 #include "solver/nonlinear/DofMap.hpp"
 
+#include <array>
 #include <map>
 #include <span>
 #include <vector>
@@ -45,9 +46,12 @@ struct LacPatchRow {
   double pairedLength = 0.0;  // L_P
   double integratedGap = 0.0; // G_P
   std::vector<std::pair<int, double>> gradient; // dG_P on the physical equations (merged)
-  // dS_P = sum w_q tau . (N_s du_s - N_m du_m), tau = n_s turned by +90 degrees (2D only; empty in
-  // 3D): the slip of the slave on the master integrated over the overlaps (LacFriction.cpp)
-  std::vector<std::pair<int, double>> slipGradient;
+  // dS_P,a = sum w_q tau_a . (N_s du_s - N_m du_m): the slip of the slave on the master along
+  // tau_a integrated over the overlaps (LacFriction.cpp). 2D: one direction, tau = n_s turned by
+  // +90 degrees. 3D: two, tau_1 the patch's reference tangent (patchTangent, from the initial
+  // mesh, so that the tangential multipliers keep their meaning from one pairing to the next)
+  // projected on the slave face's plane, tau_2 = tau_1 x n_s.
+  std::vector<std::vector<std::pair<int, double>>> slipGradients;
 };
 
 struct LacPairingOptions {
@@ -78,9 +82,18 @@ double largestZoneDisplacement(const Mesh& mesh, const LacZoneCells& zone, const
 mortar::Candidates lacCandidates(std::span<const Box3> slaves, std::span<const Box3> masters,
                                  bool bruteForce);
 
+// The slip gradients of one patch being summed: one map per tangent direction.
+using SlipSums = std::array<std::map<int, double>, 2>;
+
 // One 3D zone (LacPairing3d.cpp): slave and master faces.
 void pairZone3d(const Mesh& mesh, const LacZoneCells& zone, const std::vector<double>& u, const DofMap& dofs,
-                std::vector<LacPatchRow>& rows, std::vector<std::map<int, double>>& gradients);
+                std::vector<LacPatchRow>& rows, std::vector<std::map<int, double>>& gradients,
+                std::vector<SlipSums>& slips);
+
+// The reference tangent of a 3D patch: the global axis least aligned with the patch's outward
+// normal on the initial mesh (the first of x, y, z among equals), made orthogonal to it. On a
+// face z = const: x, so tau_1 = x and tau_2 = x x n = y for n = -z (-y for n = +z).
+Point3 patchTangent(const Point3& normal);
 
 // Rows of every patch of mesh.lacPatches() (patches of no zone stay empty, length 0), at the
 // positions X + u (`displacement`: 3 per node, ContactRows.hpp's nodalDisplacement).

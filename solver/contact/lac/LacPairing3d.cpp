@@ -4,7 +4,8 @@
 // Newell normal of its vertices turned outward; the weights are the polygon areas in the slave
 // plane times |J_config(xi)| / |J_current(xi)| (TYPE_JACOBIEN). Exact for flat faces whose
 // middle nodes sit at the middle of their edges (the linear hull's parametrisation is then the
-// face's own); curved quadratic faces are approximated by their vertex polygon.
+// face's own); curved quadratic faces are approximated by their vertex polygon. The slip
+// gradients (friction) use the two tangents of LacPairing.hpp.
 
 #include "solver/contact/lac/LacPairing.hpp"
 
@@ -91,10 +92,44 @@ void addGradient(std::map<int, double>& g, const DofMap& dofs, NodeId n, const P
   }
 }
 
+// The reference tangent of every patch of the zone (patchTangent of the summed outward Newell
+// vectors of its slave faces on the initial mesh).
+std::map<int, Point3> patchTangents(const Mesh& mesh, const LacZoneCells& zone) {
+  std::map<int, Point3> normals;
+  for (const LacSlaveCell& sc : zone.slaves) {
+    Point3& n = normals[sc.patch];
+    n = n + sc.sign * newell(faceOf(mesh, sc.cell, nullptr));
+  }
+  for (auto& [patch, n] : normals) {
+    n = patchTangent((1.0 / norm(n)) * n);
+  }
+  return normals;
+}
+
+// tau_1 = the patch's tangent projected on the face's plane (normal n), tau_2 = tau_1 x n.
+std::array<Point3, 2> faceTangents(const Point3& reference, const Point3& n) {
+  const Point3 t = reference - dot(reference, n) * n;
+  const Point3 t1 = (1.0 / norm(t)) * t;
+  return {t1, cross(t1, n)};
+}
+
 } // namespace
 
+Point3 patchTangent(const Point3& normal) {
+  std::size_t axis = 0;
+  for (std::size_t d = 1; d < 3; ++d) {
+    axis = std::fabs(normal[d]) < std::fabs(normal[axis]) ? d : axis;
+  }
+  Point3 e{0, 0, 0};
+  e[axis] = 1.0;
+  const Point3 t = e - normal[axis] * normal;
+  return (1.0 / norm(t)) * t;
+}
+
 void pairZone3d(const Mesh& mesh, const LacZoneCells& zone, const std::vector<double>& u, const DofMap& dofs,
-                std::vector<LacPatchRow>& rows, std::vector<std::map<int, double>>& gradients) {
+                std::vector<LacPatchRow>& rows, std::vector<std::map<int, double>>& gradients,
+                std::vector<SlipSums>& slips) {
+  const std::map<int, Point3> tangents = patchTangents(mesh, zone);
   std::vector<Face> masters;
   std::vector<Box3> masterBoxes;
   for (CellId c : zone.masters) {
@@ -123,6 +158,8 @@ void pairZone3d(const Mesh& mesh, const LacZoneCells& zone, const std::vector<do
     LacPatchRow& row = rows[static_cast<std::size_t>(sc.patch)];
     row.length += faceArea(jacobianOn);
     const Point3 n = outwardNormal(current, sc.sign);
+    const std::array<Point3, 2> tau = faceTangents(tangents.at(sc.patch), n);
+    auto& slip = slips[static_cast<std::size_t>(sc.patch)];
     const auto overlaps = mortar::intersectFaces(current, masters, candidates.of(k), polygonOptions);
     const auto slaveNodes = mesh.cellNodes(sc.cell);
     auto& grad = gradients[static_cast<std::size_t>(sc.patch)];
@@ -138,10 +175,18 @@ void pairZone3d(const Mesh& mesh, const LacZoneCells& zone, const std::vector<do
         row.pairedLength += w;
         row.integratedGap += w * gap;
         for (std::size_t i = 0; i < slaveNodes.size(); ++i) {
-          addGradient(grad, dofs, slaveNodes[i], n, -w * s.n(static_cast<Eigen::Index>(i)));
+          const double ns = s.n(static_cast<Eigen::Index>(i));
+          addGradient(grad, dofs, slaveNodes[i], n, -w * ns);
+          for (std::size_t a = 0; a < 2; ++a) {
+            addGradient(slip[a], dofs, slaveNodes[i], tau[a], w * ns);
+          }
         }
         for (std::size_t j = 0; j < masterNodes.size(); ++j) {
-          addGradient(grad, dofs, masterNodes[j], n, w * mp.n(static_cast<Eigen::Index>(j)));
+          const double nm = mp.n(static_cast<Eigen::Index>(j));
+          addGradient(grad, dofs, masterNodes[j], n, w * nm);
+          for (std::size_t a = 0; a < 2; ++a) {
+            addGradient(slip[a], dofs, masterNodes[j], tau[a], -w * nm);
+          }
         }
       }
     }

@@ -14,12 +14,14 @@ namespace stella::contact::lac {
 
 // Eliminates the multipliers of `rows` (B = dG_P / L_P or dS_P / L_P, y = L_P dlambda) by their
 // Schur complement. Force columns the same, but for the pressure of a patch sliding with friction:
-// its friction force -mu |lambda_P| sign(q) dS_P follows lambda_P, the column (dG_P - mu sign(q)
-// dS_P) / L_P, and the (small, dense) Schur complement is non-symmetric (LU).
+// its friction force -mu |lambda_P| sum_a qhat_a dS_P,a (qhat = q/|q|, sign(q) in 2D) follows
+// lambda_P, the column (dG_P - mu sum_a qhat_a dS_P,a) / L_P, and the (small, dense) Schur
+// complement is non-symmetric (LU).
 void LacContactConstraint::eliminate(const Eigen::VectorXd& u, Eigen::VectorXd& ddu, Eigen::VectorXd& dlambda,
                                      SaddleSolver& solver, const std::vector<SchurRow>& rows) {
   const auto gradientOf = [this](const SchurRow& r) -> const std::vector<std::pair<int, double>>& {
-    return r.slip ? rows_[r.patch].slipGradient : rows_[r.patch].gradient;
+    return r.slip() ? rows_[r.patch].slipGradients[static_cast<std::size_t>(r.direction)]
+                    : rows_[r.patch].gradient;
   };
   const auto mc = static_cast<Eigen::Index>(rows.size());
   const Eigen::Index n = ddu.size();
@@ -30,11 +32,16 @@ void LacContactConstraint::eliminate(const Eigen::VectorXd& u, Eigen::VectorXd& 
     for (const auto& [e, v] : gradientOf(r)) {
       columns[j][e] += v;
     }
-    const double slide = r.slip ? 0.0 : slidingCoupling(r.patch, u);
-    if (slide != 0.0) {
-      symmetric = false;
-      for (const auto& [e, v] : rows_[r.patch].slipGradient) {
-        columns[j][e] += slide * v;
+    if (r.slip()) {
+      continue;
+    }
+    const Tangential slide = slidingCoupling(r.patch, u);
+    for (std::size_t a = 0; a < directions(); ++a) {
+      if (slide[a] != 0.0) {
+        symmetric = false;
+        for (const auto& [e, v] : rows_[r.patch].slipGradients[a]) {
+          columns[j][e] += slide[a] * v;
+        }
       }
     }
   }
@@ -66,12 +73,14 @@ void LacContactConstraint::eliminate(const Eigen::VectorXd& u, Eigen::VectorXd& 
     for (const auto& [e, v] : gradientOf(r)) {
       bdu += v * ddu(e);
     }
-    rhs(i) = (r.slip ? slipAt(r.patch, u) : gapAt(r.patch, u)) + bdu / rows_[r.patch].pairedLength;
+    const double value =
+        r.slip() ? slipAt(r.patch, u)[static_cast<std::size_t>(r.direction)] : gapAt(r.patch, u);
+    rhs(i) = value + bdu / rows_[r.patch].pairedLength;
   }
   if (!symmetric) {
     const Eigen::FullPivLU<Eigen::MatrixXd> lu(s);
     if (!lu.isInvertible()) {
-      redundant(rows.front().patch, rows.front().slip);
+      redundant(rows.front().patch, rows.front().slip());
     }
     applyMultipliers(lu.solve(rhs), ddu, dlambda, solver, rows, columns);
     return;
@@ -84,7 +93,7 @@ void LacContactConstraint::eliminate(const Eigen::VectorXd& u, Eigen::VectorXd& 
       const Eigen::PermutationMatrix<Eigen::Dynamic> perm(ldlt.transpositionsP());
       const Eigen::PermutationMatrix<Eigen::Dynamic> inverse(perm.inverse());
       const SchurRow& r = rows[static_cast<std::size_t>(inverse.indices()(p))];
-      redundant(r.patch, r.slip);
+      redundant(r.patch, r.slip());
     }
   }
   applyMultipliers(ldlt.solve(rhs), ddu, dlambda, solver, rows, columns);
@@ -103,7 +112,11 @@ void LacContactConstraint::applyMultipliers(const Eigen::VectorXd& y, Eigen::Vec
     for (const auto& [e, v] : columns[j]) {
       f(e) += y(jj) * v / length;
     }
-    (r.slip ? lagsT_ : lagsC_)[r.patch] += y(jj) / length;
+    if (r.slip()) {
+      lagsT_[r.patch][static_cast<std::size_t>(r.direction)] += y(jj) / length;
+    } else {
+      lagsC_[r.patch] += y(jj) / length;
+    }
   }
   Eigen::VectorXd dx;
   Eigen::VectorXd dy;

@@ -101,9 +101,9 @@ TEST(LacContact, WhatIsNotImplementedIsRefusedNamingIt) {
     std::string named;
   } cases[] = {
       {{false, true, ", LISSAGE='OUI'", "", ""}, "CONTACT_20", "LISSAGE='OUI' with ALGO_CONT='LAC'"},
-      {{true, true, ", FROTTEMENT='COULOMB'", ", COULOMB=0.1", ""},
+      {{true, true, ", FROTTEMENT='COULOMB', ALGO_RESO_FROT='POINT_FIXE'", ", COULOMB=0.1", ""},
        "CONTACT_20",
-       "FROTTEMENT='COULOMB' with ALGO_CONT='LAC' in 3D"},
+       "ALGO_RESO_FROT='POINT_FIXE' with ALGO_CONT='LAC'"},
       {{false, true, ", FROTTEMENT='COULOMB', ALGO_RESO_FROT='POINT_FIXE'", ", COULOMB=0.1", ""},
        "CONTACT_20",
        "ALGO_RESO_FROT='POINT_FIXE' with ALGO_CONT='LAC'"},

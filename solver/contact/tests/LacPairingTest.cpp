@@ -3,6 +3,7 @@
 // differences, TYPE_APPA='RAPIDE' (R-tree candidates) against 'ROBUSTE' (every master cell).
 
 #include "solver/contact/lac/LacPairing.hpp"
+#include "solver/mesh/MeshGeometry.hpp"
 
 #include <gtest/gtest.h>
 
@@ -183,6 +184,27 @@ TEST(LacPairing, RapideFindsADeeplyInterpenetratedSlave) {
     EXPECT_NEAR(r.pairedLength, 0.25, 1e-14);
     EXPECT_NEAR(r.integratedGap / r.pairedLength, -0.5, 1e-14);
   }
+}
+
+// The reference tangent of a 3D patch (friction: tau_1, then tau_2 = tau_1 x n): unit, orthogonal to
+// the normal, the least aligned axis made orthogonal (x first among equals): x on the faces
+// z = const, so that (LAGS_F1, LAGS_F2) are along (x, y) under a body (n = -z).
+TEST(LacPairing, PatchTangentIsTheLeastAlignedAxisMadeOrthogonal) {
+  const auto near = [](const Point3& a, const Point3& b) {
+    return std::fabs(a[0] - b[0]) < 1e-15 && std::fabs(a[1] - b[1]) < 1e-15 && std::fabs(a[2] - b[2]) < 1e-15;
+  };
+  EXPECT_TRUE(near(patchTangent({0, 0, -1}), {1, 0, 0}));
+  EXPECT_TRUE(near(patchTangent({0, 0, 1}), {1, 0, 0}));
+  EXPECT_TRUE(near(patchTangent({1, 0, 0}), {0, 1, 0}));
+  const Point3 n{0, 0, -1};
+  EXPECT_TRUE(near(cross(patchTangent(n), n), {0, 1, 0})); // tau_2 = y under a body
+  const double k = 1.0 / std::sqrt(3.0);
+  for (const Point3& m : {Point3{k, k, k}, Point3{0.6, -0.8, 0.0}, Point3{0.1, 0.2, std::sqrt(0.95)}}) {
+    const Point3 t = patchTangent(m);
+    EXPECT_NEAR(dot(t, t), 1.0, 1e-15);
+    EXPECT_NEAR(dot(t, m), 0.0, 1e-15);
+  }
+  EXPECT_GT(patchTangent({0.6, -0.8, 0.0})[2], 0.99); // z, the axis the normal lies across
 }
 
 } // namespace

@@ -287,6 +287,38 @@ TEST(LacCutting, EveryFaceOfOneCellOfEachType) {
   }
 }
 
+// Prisms and pyramids as meshers number them: the numbering may start at any vertex (every
+// rotation that keeps the orientation); every face of the cell cut, linear and quadratic, both
+// DECOUPE_HEXA (which concerns hexahedra only: the same cut).
+TEST(LacCutting, PrismsAndPyramidsNumberedFromAnyVertex) {
+  const std::vector<std::vector<int>> prism = {
+      {0, 1, 2, 3, 4, 5}, {1, 2, 0, 4, 5, 3}, {2, 0, 1, 5, 3, 4}, {5, 4, 3, 2, 1, 0}, {3, 5, 4, 0, 2, 1}};
+  const std::vector<std::vector<int>> pyramid = {
+      {0, 1, 2, 3, 4}, {1, 2, 3, 0, 4}, {2, 3, 0, 1, 4}, {3, 0, 1, 2, 4}};
+  for (const CellType t : {CellType::PENTA6, CellType::PYRAM5}) {
+    for (const auto& perm : t == CellType::PENTA6 ? prism : pyramid) {
+      const Mesh one = singleCell(t);
+      Mesh m;
+      for (NodeId n = 0; n < one.nodeCount(); ++n) {
+        m.addNode(one.point(n));
+      }
+      std::vector<NodeId> nodes;
+      for (const int i : perm) {
+        nodes.push_back(one.cellNodes(0)[static_cast<std::size_t>(i)]);
+      }
+      m.setCellGroup("VOLUME", {m.addCell(t, nodes)});
+      addSkin(m);
+      for (const auto mode : {LacHexaCut::Pyramids, LacHexaCut::Hexahedra}) {
+        const std::string what = std::string(name(t)) + " from vertex " + std::to_string(perm[0]);
+        const auto linear = cutAndCheck(m, {"SKIN"}, mode, what);
+        const auto quadratic =
+            cutAndCheck(convertCells(m, CellConversion::LineToQuad, {}), {"SKIN"}, mode, what + " quadratic");
+        EXPECT_EQ(linear.out.cellCount(), quadratic.out.cellCount()) << what;
+      }
+    }
+  }
+}
+
 // code_aster's numbers of new nodes and of cells replacing the cell and its slave face.
 TEST(LacCutting, NewNodesAndPiecesAreCodeAsters) {
   struct Case {
