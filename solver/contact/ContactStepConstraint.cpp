@@ -161,11 +161,11 @@ std::unique_ptr<StepConstraint> makeLac(std::shared_ptr<const ContactDefinition>
 }
 
 // INTEGRATION with contact points off the slave nodes (GAUSS, SIMPSON, NCOTES; AUTO on TRIA6/QUAD8):
-// STANDARD frictionless with the master's normal only.
+// frictionless with the master's normal only.
 void refuseAtPoints(const ContactDefinition& def) {
   const std::string note =
       "contact points off the slave nodes (ContinuousPointContact) are implemented with "
-      "ALGO_CONT='STANDARD', FROTTEMENT='SANS', NORMALE='MAIT', VECT_MAIT=VECT_ESCL='AUTO' "
+      "FROTTEMENT='SANS', NORMALE='MAIT', VECT_MAIT=VECT_ESCL='AUTO' "
       "and LISSAGE='NON'; use INTEGRATION='AUTO' on TRIA3, QUAD4, QUAD9 (SEG2, SEG3) slave "
       "cells for the rest";
   if (def.hasFriction()) {
@@ -179,9 +179,6 @@ void refuseAtPoints(const ContactDefinition& def) {
     const SourceLocation& at = z.continuous.integration != contact::ContactIntegration::Auto
                                    ? z.continuous.integrationAt
                                    : z.location;
-    if (z.algorithm == ContactAlgorithm::ContinuePenalty) {
-      notImplemented("ALGO_CONT='PENALISATION' with INTEGRATION other than 'AUTO' on linear cells", at, note);
-    }
     if (z.normal != contact::NormalChoice::Master || z.masterVector != contact::VectorChoice::Auto ||
         z.slaveVector != contact::VectorChoice::Auto) {
       notImplemented(
@@ -221,8 +218,10 @@ std::unique_ptr<contact::ContactConstraint> makeContinuous(std::shared_ptr<const
                                              fem::spaceDimension(system.model().modelling));
   if (contact::needsContactPoints(*def)) {
     refuseAtPoints(*def);
-    return std::make_unique<contact::ContinuousPointContactConstraint>(std::move(def), system.dofs(),
-                                                                       system.model().modelling);
+    auto p = std::make_unique<contact::ContinuousPointContactConstraint>(std::move(def), system.dofs(),
+                                                                         system.model().modelling);
+    p->setInterpenetrationPolicy(policy);
+    return p;
   }
   auto c = std::make_unique<contact::ContinuousContactConstraint>(std::move(def), system.dofs(),
                                                                   system.model().modelling);

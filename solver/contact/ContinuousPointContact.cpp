@@ -4,6 +4,7 @@
 
 #include "solver/contact/CellProjection.hpp"
 #include "solver/contact/ContactResultField.hpp"
+#include "solver/contact/ContinuousAdaptation.hpp"
 #include "solver/contact/ContinuousIntegrationRule.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/fem/ReferenceElement.hpp"
@@ -22,15 +23,20 @@ std::string ContinuousPointContactConstraint::resolutionEffects() const {
   for (const auto& z : definition_->zones) {
     if (z.resolve) {
       const auto& c = z.continuous;
-      zones.push_back(fmt::format(
-          "STANDARD COEF_CONT={} INTEGRATION='{}'{}", c.augmentation, integrationName(c.integration),
-          c.integrationOrder > 0 ? fmt::format(" ORDRE_INT={}", c.integrationOrder) : ""));
+      zones.push_back(
+          fmt::format("{} INTEGRATION='{}'{}",
+                      z.algorithm == ContactAlgorithm::ContinuePenalty
+                          ? fmt::format("PENALISATION COEF_PENA_CONT={}", c.penalty)
+                          : fmt::format("STANDARD COEF_CONT={}", c.augmentation),
+                      integrationName(c.integration),
+                      c.integrationOrder > 0 ? fmt::format(" ORDRE_INT={}", c.integrationOrder) : ""));
     }
   }
-  return fmt::format("{} (LAGS_C on the slave nodes, {} contact points), ALGO_RESO_CONT={}",
+  return fmt::format("{} (LAGS_C on the slave nodes, {} contact points), ALGO_RESO_CONT={}{}",
                      fmt::join(zones, "; "), points_.size(),
                      definition_->settings.continuous.statusLoop == StatusLoop::Newton ? "NEWTON"
-                                                                                       : "POINT_FIXE");
+                                                                                       : "POINT_FIXE",
+                     penetrationEffects(*definition_, policy_));
 }
 
 double ContinuousPointContactConstraint::lambdaAt(const ContactPoint& p) const {
@@ -51,6 +57,15 @@ double ContinuousPointContactConstraint::gapAt(const ContactPoint& p, const Eige
   return g;
 }
 
+double ContinuousPointContactConstraint::pressureAt(const ContactPoint& p, double gap) const {
+  return p.penalised ? p.rho * gap : lambdaAt(p) + p.rho * gap;
+}
+
+double ContinuousPointContactConstraint::indicatorAt(const ContactPoint& p, const Eigen::VectorXd& u) const {
+  const double g = gapAt(p, u);
+  return p.penalised ? g : lambdaAt(p) + p.rho * g;
+}
+
 std::vector<char> ContinuousPointContactConstraint::statusAt(const Eigen::VectorXd& u) const {
   std::vector<char> s(points_.size(), 0);
   for (std::size_t q = 0; q < points_.size(); ++q) {
@@ -58,7 +73,7 @@ std::vector<char> ContinuousPointContactConstraint::statusAt(const Eigen::Vector
     if (q < frozen_.size() && frozen_[q] >= 0) {
       s[q] = static_cast<char>(frozen_[q]);
     } else if (p.paired && p.weight != 0.0) {
-      s[q] = lambdaAt(p) + p.rho * gapAt(p, u) < 0.0 ? 1 : 0;
+      s[q] = indicatorAt(p, u) < 0.0 ? 1 : 0;
     }
   }
   return s;
@@ -115,7 +130,7 @@ void ContinuousPointContactConstraint::addForces(const Eigen::VectorXd& u, Eigen
     if (on) {
       ++active;
       penetration = std::max(penetration, -g);
-      const double pressure = lambdaAt(p) + p.rho * g; // -w (lambda + rho g) grad g
+      const double pressure = pressureAt(p, g); // -w (lambda + rho g) grad g
       for (const auto& [e, a] : p.row) {
         forces(e) -= p.weight * pressure * a;
       }
@@ -150,8 +165,8 @@ void ContinuousPointContactConstraint::correct(const Eigen::VectorXd& u, Eigen::
   std::vector<char> used(static_cast<std::size_t>(nm), 0);
   for (std::size_t q = 0; q < points_.size(); ++q) {
     const ContactPoint& p = points_[q];
-    if (!p.paired || p.weight == 0.0) {
-      continue;
+    if (!p.paired || p.weight == 0.0 || p.penalised) {
+      continue; // a penalised point's pressure is eliminated: no equation
     }
     if (status[q] != 0) {
       const double g = gapAt(p, u);
@@ -284,8 +299,9 @@ bool ContinuousPointContactConstraint::acceptResolution(const Eigen::VectorXd& u
   const std::vector<char> now = statusAt(u);
   const bool newton = c.statusLoop == StatusLoop::Newton;
   const std::vector<char>& used = newton ? lastStatus_ : status_;
+  penalisedPressures(u);
   if (points_.empty() || now == used || (newton && lastStatus_.empty() && now == status_)) {
-    return true;
+    return acceptPenetration(u);
   }
   int changed = 0;
   int frozen = 0;
@@ -299,7 +315,8 @@ bool ContinuousPointContactConstraint::acceptResolution(const Eigen::VectorXd& u
     const std::string& adaptation =
         definition_->zones[static_cast<std::size_t>(points_[q].zone)].continuous.adaptation;
     if (++changes_[q] >= 4 && (adaptation == "CYCLAGE" || adaptation == "TOUT")) {
-      frozen_[q] = lambdaAt(points_[q]) < 0.0 ? 1 : 0;
+      const ContactPoint& p = points_[q];
+      frozen_[q] = (p.penalised ? gapAt(p, u) : lambdaAt(p)) < 0.0 ? 1 : 0;
       ++frozen;
     }
   }
@@ -334,6 +351,62 @@ bool ContinuousPointContactConstraint::acceptResolution(const Eigen::VectorXd& u
   return false;
 }
 
+bool ContinuousPointContactConstraint::acceptPenetration(const Eigen::VectorXd& u) {
+  std::vector<double> penetration(definition_->zones.size(), 0.0);
+  bool any = false;
+  for (const ContactPoint& p : points_) {
+    if (p.paired && p.penalised && p.weight != 0.0) {
+      auto& d = penetration[static_cast<std::size_t>(p.zone)];
+      d = std::max(d, -gapAt(p, u));
+      any = true;
+    }
+  }
+  if (!any) {
+    return true;
+  }
+  const std::vector<std::string> raised =
+      raisePenalties(*definition_, policy_, penetration, time_, penaltyFactor_,
+                     [this](std::string text) { noteAlarm(std::move(text)); });
+  if (raised.empty()) {
+    return true;
+  }
+  for (ContactPoint& p : points_) {
+    if (p.penalised) {
+      p.rho = definition_->zones[static_cast<std::size_t>(p.zone)].continuous.penalty *
+              penaltyFactor_[static_cast<std::size_t>(p.zone)];
+    }
+  }
+  continuation_ = fmt::format("penalty raised ({}): Newton iterations go on", fmt::join(raised, "; "));
+  return false;
+}
+
+void ContinuousPointContactConstraint::penalisedPressures(const Eigen::VectorXd& u) {
+  if (std::find(penalisedNode_.begin(), penalisedNode_.end(), 1) == penalisedNode_.end()) {
+    return;
+  }
+  const std::vector<char> status = statusAt(u);
+  std::vector<double> pressure(multiplierNode_.size(), 0.0);
+  std::vector<double> weight(multiplierNode_.size(), 0.0);
+  for (std::size_t q = 0; q < points_.size(); ++q) {
+    const ContactPoint& p = points_[q];
+    if (!p.paired || !p.penalised) {
+      continue;
+    }
+    const double value = status[q] != 0 ? pressureAt(p, gapAt(p, u)) : 0.0;
+    for (std::size_t k = 0; k < p.nodes.size(); ++k) {
+      if (p.multiplier[k] >= 0) {
+        pressure[static_cast<std::size_t>(p.multiplier[k])] += p.weight * p.shape[k] * value;
+        weight[static_cast<std::size_t>(p.multiplier[k])] += p.weight * p.shape[k];
+      }
+    }
+  }
+  for (std::size_t i = 0; i < multiplierNode_.size(); ++i) {
+    if (penalisedNode_[i] != 0) {
+      lambda_[i] = weight[i] > 0.0 ? pressure[i] / weight[i] : 0.0;
+    }
+  }
+}
+
 void ContinuousPointContactConstraint::nodalForces(const Eigen::VectorXd& u, std::vector<double>& force,
                                                    std::vector<char>& touching) const {
   force.assign(multiplierNode_.size(), 0.0);
@@ -344,7 +417,7 @@ void ContinuousPointContactConstraint::nodalForces(const Eigen::VectorXd& u, std
     if (status[q] == 0) {
       continue;
     }
-    const double pressure = lambdaAt(p) + p.rho * gapAt(p, u);
+    const double pressure = pressureAt(p, gapAt(p, u));
     for (std::size_t k = 0; k < p.nodes.size(); ++k) {
       const int i = p.multiplier[k];
       if (i >= 0 && p.shape[k] != 0.0) {

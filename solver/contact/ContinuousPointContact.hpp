@@ -2,7 +2,7 @@
 // Continuous contact with contact points that are not slave nodes (DEFI_CONTACT
 // FORMULATION='CONTINUE', ZONE/INTEGRATION='GAUSS', 'SIMPSON', 'NCOTES' with ORDRE_INT, and 'AUTO' on
 // TRIA6 and QUAD8 slave cells, whose code_aster points are not their nodes; ContinuousIntegrationRule).
-// ALGO_CONT='STANDARD', frictionless; the nodal cases stay with ContinuousContactConstraint.
+// ALGO_CONT='STANDARD' and 'PENALISATION'; the nodal cases stay with ContinuousContactConstraint.
 //
 // The unknowns LAGS_C (lambda_i) are on the slave nodes; at each integration point p of a slave
 // cell (weight w_p = W_p |J(xi_p)| on the initial configuration, x r_p in AXIS) the multiplier is
@@ -22,9 +22,18 @@
 // points as the nodal formulation acts on the nodes. CONT_NOEU per slave node: RN the nodal contact
 // force sum_C w_p N_i(p) (-(lambda_p + rho g_p)), CONT 2 when a point of its cells with N_i != 0 is
 // in contact, JEU the node's own gap.
+//   ALGO_CONT='PENALISATION' (rho = COEF_PENA_CONT, times the raises of PENE_MAXI / the
+// INTERPENETRATION event, shared with the nodal formulation: raisePenalties): lambda_p = rho
+// min(g_p, 0) eliminated at each point, point p in contact when g_p < 0, the force -w_p rho g_p A_p
+// and the tangent rho w_p A_p^T A_p; the LAGS_C of the nodes of penalised zones are not unknowns:
+// stored as the nodal pressure sum_p w_p N_i(p) rho g_p / sum_p w_p N_i(p) (0 where that weight
+// is not positive).
 
 #include "solver/contact/ContactConstraint.hpp"
 #include "solver/fem/Modelling.hpp"
+#include "solver/functions/InstantList.hpp"
+
+#include <optional>
 
 namespace stella::contact {
 
@@ -50,6 +59,8 @@ public:
   std::string iterationHeader() const override;
 
   int contactPoints() const { return static_cast<int>(points_.size()); }
+  // DEFI_LIST_INST ECHEC EVENEMENT='INTERPENETRATION' (penalised zones).
+  void setInterpenetrationPolicy(std::optional<FailurePolicy> policy) { policy_ = std::move(policy); }
 
 protected:
   std::string resolutionEffects() const override;
@@ -65,7 +76,8 @@ private:
     std::vector<NodeId> nodes;   // the slave cell's nodes
     std::vector<double> shape;   // N_i at the point
     double weight = 0.0;
-    double rho = 0.0;
+    double rho = 0.0;       // COEF_CONT, or COEF_PENA_CONT times the zone's raises
+    bool penalised = false; // ALGO_CONT='PENALISATION'
     bool paired = false;
     std::vector<std::pair<int, double>> row; // A_p on the equations
     double gap = 0.0;                        // at the pairing
@@ -74,6 +86,14 @@ private:
   void checkPointCount() const;
   void pairPoints();
   double lambdaAt(const ContactPoint& p) const;
+  // The contact pressure at a point in contact: lambda_p + rho g_p, or rho g_p (penalised).
+  double pressureAt(const ContactPoint& p, double gap) const;
+  // The contact indicator (negative in contact): lambda_p + rho g_p, or g_p (penalised).
+  double indicatorAt(const ContactPoint& p, const Eigen::VectorXd& u) const;
+  // The penalised zones' PENE_MAXI / INTERPENETRATION control: false when a penalty was raised.
+  bool acceptPenetration(const Eigen::VectorXd& u);
+  // LAGS_C of the nodes of penalised zones: the nodal pressure of their points (header).
+  void penalisedPressures(const Eigen::VectorXd& u);
   double gapAt(const ContactPoint& p, const Eigen::VectorXd& u) const;
   std::vector<char> statusAt(const Eigen::VectorXd& u) const;
   const std::vector<char>& currentStatus(const Eigen::VectorXd& u);
@@ -98,6 +118,9 @@ private:
   int statusIterations_ = 0;
   double noteGeometry_ = -1.0; // geometricCriterion() at the last addForces
   std::string continuation_;
+  std::optional<FailurePolicy> policy_; // INTERPENETRATION event
+  std::vector<double> penaltyFactor_;   // per zone: the raises of COEF_PENA_CONT
+  std::vector<char> penalisedNode_;     // per multiplier: a node of a penalised zone
 };
 
 } // namespace stella::contact

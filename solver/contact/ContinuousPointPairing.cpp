@@ -96,7 +96,8 @@ void ContinuousPointContactConstraint::buildPoints() {
         const Eigen::VectorXd n = ref.values(xi);
         ContactPoint p;
         p.zone = static_cast<int>(z);
-        p.rho = zone.continuous.augmentation;
+        p.penalised = zone.algorithm == ContactAlgorithm::ContinuePenalty;
+        p.rho = p.penalised ? zone.continuous.penalty : zone.continuous.augmentation;
         p.weight = rule.weights[static_cast<std::size_t>(g)] * jacobian(ref, x, xi);
         double r = 0.0;
         for (std::size_t k = 0; k < nodes.size(); ++k) {
@@ -113,6 +114,15 @@ void ContinuousPointContactConstraint::buildPoints() {
     }
   }
   checkPointCount();
+  penalisedNode_.assign(multiplierNode_.size(), 0);
+  for (const ContactPoint& p : points_) {
+    for (int i : p.multiplier) {
+      if (i >= 0 && p.penalised) {
+        penalisedNode_[static_cast<std::size_t>(i)] = 1;
+      }
+    }
+  }
+  penaltyFactor_.assign(definition_->zones.size(), 1.0);
   lambda_.assign(multiplierNode_.size(), 0.0);
   lambdaStart_ = lambda_;
   status_.assign(points_.size(), 0);
@@ -126,7 +136,7 @@ void ContinuousPointContactConstraint::checkPointCount() const {
     std::set<int> multipliers;
     long count = 0;
     for (const ContactPoint& p : points_) {
-      if (p.zone == static_cast<int>(z)) {
+      if (p.zone == static_cast<int>(z) && !p.penalised) { // penalised: no multiplier unknowns
         ++count;
         multipliers.insert(p.multiplier.begin(), p.multiplier.end());
       }

@@ -290,8 +290,6 @@ TEST(ContinuousIntegrationRule, WhatThePointsDoNotImplementIsRefused) {
     std::string zone;
     std::string named;
   } cases[] = {
-      {"", ", ALGO_CONT='PENALISATION', COEF_PENA_CONT=1.0e4, INTEGRATION='GAUSS'",
-       "ALGO_CONT='PENALISATION' with INTEGRATION other than 'AUTO' on linear cells"},
       {" FROTTEMENT='COULOMB',", ", COULOMB=0.2, INTEGRATION='SIMPSON'",
        "FROTTEMENT='COULOMB' with INTEGRATION other than 'AUTO' on linear cells"},
       {"", ", NORMALE='ESCL', INTEGRATION='NCOTES'", "NORMALE other than 'MAIT'"},
