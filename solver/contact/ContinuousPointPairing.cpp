@@ -124,6 +124,10 @@ void ContinuousPointContactConstraint::buildPoints() {
   }
   penaltyFactor_.assign(definition_->zones.size(), 1.0);
   lambda_.assign(multiplierNode_.size(), 0.0);
+  lambdaT_.assign(multiplierNode_.size(), 0.0);
+  lambdaTStart_ = lambdaT_;
+  pressureT_.assign(points_.size(), 0.0);
+  pressureTStart_ = pressureT_;
   lambdaStart_ = lambda_;
   status_.assign(points_.size(), 0);
   contactStart_ = status_;
@@ -178,6 +182,7 @@ void ContinuousPointContactConstraint::pairPoints() {
     const ContactZone& zone = definition_->zones[static_cast<std::size_t>(p.zone)];
     p.paired = false;
     p.row.clear();
+    p.tangentRow.clear();
     Point3 x{0, 0, 0};
     Point3 reference{0, 0, 0};
     std::set<CellId> candidates;
@@ -220,6 +225,9 @@ void ContinuousPointContactConstraint::pairPoints() {
     p.paired = true;
     p.gap = dot(n, x - cp.x);
     const auto masterNodes = mesh.cellNodes(static_cast<CellId>(best.cell));
+    // the gap's gradient A_p along n; with friction (2D) the slip's T_p along t = n turned by +90 degrees
+    const Point3 t{-n[1], n[0], 0.0};
+    p.tangent = {t[0], t[1], t[2]};
     for (int c = 0; c < nc; ++c) {
       const auto cc = static_cast<std::size_t>(c);
       for (std::size_t k = 0; k < p.nodes.size(); ++k) {
@@ -227,11 +235,17 @@ void ContinuousPointContactConstraint::pairPoints() {
         if (e >= 0 && p.shape[k] != 0.0 && n[cc] != 0.0) {
           p.row.emplace_back(e, p.shape[k] * n[cc]);
         }
+        if (e >= 0 && p.shape[k] != 0.0 && t[cc] != 0.0 && friction()) {
+          p.tangentRow.emplace_back(e, p.shape[k] * t[cc]);
+        }
       }
       for (std::size_t j = 0; j < masterNodes.size(); ++j) {
         const int e = dofs_.dof(masterNodes[j], c);
         if (e >= 0 && cp.shape.n[j] != 0.0 && n[cc] != 0.0) {
           p.row.emplace_back(e, -cp.shape.n[j] * n[cc]);
+        }
+        if (e >= 0 && cp.shape.n[j] != 0.0 && t[cc] != 0.0 && friction()) {
+          p.tangentRow.emplace_back(e, -cp.shape.n[j] * t[cc]);
         }
       }
     }
