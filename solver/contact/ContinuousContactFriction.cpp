@@ -290,30 +290,11 @@ double ContinuousContactConstraint::frictionCriterion() const {
 }
 
 bool ContinuousContactConstraint::acceptFriction(const Eigen::VectorXd& u) {
-  const auto& c = definition_->settings.continuous;
-  // change <= RESI_FROT x max |LAGS_C| (none before the first correction)
-  const double criterion = frictionCriterion();
-  if (criterion < 0.0 || criterion <= c.frictionResidual) {
-    return true;
-  }
-  if (!c.frictionFixedPoint) {
-    // NEWTON: the threshold |LAGS_C| still moved at the last correction
-    continuation_ = fmt::format("friction threshold moved by {:.2e} of |LAGS_C| (RESI_FROT {:g}): Newton "
-                                "iterations go on",
-                                criterion, c.frictionResidual);
-    return false;
-  }
-  if (++frictionIterations_ > c.maxFrictionIterations) {
-    throw UserError(
-        Diagnostic::noConvergence(
-            "CONTACT_28",
-            fmt::format(
-                "the friction loop (ALGO_RESO_FROT='POINT_FIXE') did not converge at INST {}: after {} "
-                "friction iterations the threshold |LAGS_C| still changes by {:.2e} of its maximum "
-                "(RESI_FROT {:g})",
-                time_, c.maxFrictionIterations, criterion, c.frictionResidual),
-            definition_->location)
-            .withNote("raise ITER_FROT_MAXI, use ALGO_RESO_FROT='NEWTON', or refine the list of instants"));
+  const FrictionLoop step =
+      frictionLoopStep(definition_->settings.continuous, frictionCriterion(), frictionIterations_, time_,
+                       definition_->location, "", continuation_);
+  if (step != FrictionLoop::NewThreshold) {
+    return step == FrictionLoop::Accept;
   }
   for (std::size_t i = 0; i < rows_.link.size(); ++i) {
     const auto k = static_cast<std::size_t>(rows_.link[i]);
@@ -321,9 +302,6 @@ bool ContinuousContactConstraint::acceptFriction(const Eigen::VectorXd& u) {
   }
   status_ = statusAt(u); // the stick/slip status under the new threshold
   lastStatus_ = status_;
-  continuation_ = fmt::format("friction threshold updated (loop {}, change {:.2e} of |LAGS_C|): Newton "
-                              "iterations go on",
-                              frictionIterations_, criterion);
   return false;
 }
 

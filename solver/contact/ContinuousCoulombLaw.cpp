@@ -3,6 +3,7 @@
 #include "solver/contact/ContinuousCoulombLaw.hpp"
 
 #include <cmath>
+#include <fmt/format.h>
 #include <limits>
 
 namespace stella::contact {
@@ -60,6 +61,37 @@ double frictionThresholdChange(const Eigen::VectorXd& before, const Eigen::Vecto
     return change / scale;
   }
   return change > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;
+}
+
+FrictionLoop frictionLoopStep(const ContinuousSettings& c, double criterion, int& iterations, double time,
+                              const SourceLocation& at, const std::string& what, std::string& continuation) {
+  // change <= RESI_FROT x max |LAGS_C| (none before the first correction)
+  if (criterion < 0.0 || criterion <= c.frictionResidual) {
+    return FrictionLoop::Accept;
+  }
+  if (!c.frictionFixedPoint) {
+    // NEWTON: the threshold |LAGS_C| still moved at the last correction
+    continuation = fmt::format("friction threshold moved by {:.2e} of |LAGS_C| (RESI_FROT {:g}): Newton "
+                               "iterations go on",
+                               criterion, c.frictionResidual);
+    return FrictionLoop::NewtonGoesOn;
+  }
+  if (++iterations > c.maxFrictionIterations) {
+    throw UserError(
+        Diagnostic::noConvergence(
+            "CONTACT_28",
+            fmt::format(
+                "the friction loop (ALGO_RESO_FROT='POINT_FIXE') did not converge at INST {}: after {} "
+                "friction iterations the threshold |LAGS_C|{} still changes by {:.2e} of its maximum "
+                "(RESI_FROT {:g})",
+                time, c.maxFrictionIterations, what, criterion, c.frictionResidual),
+            at)
+            .withNote("raise ITER_FROT_MAXI, use ALGO_RESO_FROT='NEWTON', or refine the list of instants"));
+  }
+  continuation = fmt::format("friction threshold updated (loop {}, change {:.2e} of |LAGS_C|): Newton "
+                             "iterations go on",
+                             iterations, criterion);
+  return FrictionLoop::NewThreshold;
 }
 
 } // namespace stella::contact

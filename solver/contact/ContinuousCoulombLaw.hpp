@@ -12,7 +12,10 @@
 // (senseInStatus), the sliding sense is part of the status (3: backwards), so that a sign change
 // of q is a status change and not a force flipping within the Newton iterations.
 
+#include "solver/contact/ContactDefinition.hpp"
+
 #include <Eigen/Dense>
+#include <string>
 
 namespace stella::contact {
 
@@ -37,5 +40,14 @@ Eigen::Vector2d coulombPressure(const CoulombPoint& p, char s, const Eigen::Vect
 // The RESI_FROT criterion: max |t_now - t_before| over max t_now (infinite when every t_now
 // vanished and something changed, 0 when nothing did).
 double frictionThresholdChange(const Eigen::VectorXd& before, const Eigen::VectorXd& now);
+
+// The friction loop's decision at a converged Newton state on the RESI_FROT criterion (negative:
+// no correction yet): Accept; NewtonGoesOn (ALGO_RESO_FROT='NEWTON': the threshold still moved,
+// `continuation` says so); NewThreshold (POINT_FIXE: loop `iterations` + 1 with the thresholds of
+// now; throws CONTACT_28 past ITER_FROT_MAXI). `what` names the thresholds' places in the message.
+enum class FrictionLoop { Accept, NewtonGoesOn, NewThreshold };
+FrictionLoop frictionLoopStep(const ContinuousSettings& settings, double criterion, int& iterations,
+                              double time, const SourceLocation& at, const std::string& what,
+                              std::string& continuation);
 
 } // namespace stella::contact

@@ -202,37 +202,17 @@ double ContinuousPointContactConstraint::frictionCriterion() const {
 }
 
 bool ContinuousPointContactConstraint::acceptFriction(const Eigen::VectorXd& u) {
-  const auto& c = definition_->settings.continuous;
-  const double criterion = frictionCriterion(); // change <= RESI_FROT x max |LAGS_C|
-  if (criterion < 0.0 || criterion <= c.frictionResidual) {
-    return true;
-  }
-  if (!c.frictionFixedPoint) {
-    continuation_ = fmt::format("friction threshold moved by {:.2e} of |LAGS_C| (RESI_FROT {:g}): Newton "
-                                "iterations go on",
-                                criterion, c.frictionResidual);
-    return false;
-  }
-  if (++frictionIterations_ > c.maxFrictionIterations) {
-    throw UserError(
-        Diagnostic::noConvergence(
-            "CONTACT_28",
-            fmt::format(
-                "the friction loop (ALGO_RESO_FROT='POINT_FIXE') did not converge at INST {}: after {} "
-                "friction iterations the threshold |LAGS_C| of the contact points still changes by "
-                "{:.2e} of its maximum (RESI_FROT {:g})",
-                time_, c.maxFrictionIterations, criterion, c.frictionResidual),
-            definition_->location)
-            .withNote("raise ITER_FROT_MAXI, use ALGO_RESO_FROT='NEWTON', or refine the list of instants"));
+  const FrictionLoop step =
+      frictionLoopStep(definition_->settings.continuous, frictionCriterion(), frictionIterations_, time_,
+                       definition_->location, " of the contact points", continuation_);
+  if (step != FrictionLoop::NewThreshold) {
+    return step == FrictionLoop::Accept;
   }
   for (std::size_t q = 0; q < points_.size(); ++q) {
     threshold_[q] = std::max(0.0, -lambdaAt(points_[q]));
   }
   status_ = statusAt(u); // the stick/slip status under the new threshold
   lastStatus_ = status_;
-  continuation_ = fmt::format("friction threshold updated (loop {}, change {:.2e} of |LAGS_C|): Newton "
-                              "iterations go on",
-                              frictionIterations_, criterion);
   return false;
 }
 
@@ -314,6 +294,15 @@ void ContinuousPointContactConstraint::acceptFrictionStep(const Eigen::VectorXd&
     }
     const double limit = mu * std::max(0.0, -lambda_[i]);
     lagsFOut_[i] = limit > 0.0 ? pt / limit : 0.0;
+  }
+  // on the pairing's tangent of the node (as the nodal formulation's LAGS_F1): the points' t is the
+  // master normal turned by +90 degrees
+  for (const ContactLink& l : links_) {
+    const int i = multiplierOfNode_[static_cast<std::size_t>(l.slave)];
+    if (i >= 0 && l.paired) {
+      const double sense = -l.normal[1] * l.tangent1[0] + l.normal[0] * l.tangent1[1];
+      lagsFOut_[static_cast<std::size_t>(i)] *= sense < 0.0 ? -1.0 : 1.0;
+    }
   }
 }
 
