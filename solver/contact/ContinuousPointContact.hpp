@@ -121,6 +121,8 @@ private:
                        MultiplierSystem& sys) const;
   void frictionEquations(const Eigen::VectorXd& u, const Eigen::VectorXd& ddu,
                          const std::vector<char>& status, MultiplierSystem& sys) const;
+  // The equation of LAGS_F at a point sliding (target mu t_p e_p) or out of contact (target 0).
+  void addTangentialMass(const ContactPoint& p, double rho, double target, MultiplierSystem& sys) const;
   bool friction() const { return definition_->hasFriction(); }
   bool frictionUnknowns() const; // STANDARD friction: LAGS_F are unknowns
   bool newtonFriction() const { return friction() && !definition_->settings.continuous.frictionFixedPoint; }

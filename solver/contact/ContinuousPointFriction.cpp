@@ -103,10 +103,18 @@ void ContinuousPointContactConstraint::frictionEquations(const Eigen::VectorXd& 
   const bool newton = newtonFriction();
   for (std::size_t q = 0; q < points_.size(); ++q) {
     const ContactPoint& p = points_[q];
-    if (!p.paired || p.weight == 0.0 || p.penalised || status[q] == 0) {
+    if (!p.paired || p.weight == 0.0 || p.penalised) {
       continue;
     }
     const CoulombPoint c = coulombAt(q);
+    const bool unknowns = frictionUnknowns() &&
+                          !definition_->zones[static_cast<std::size_t>(p.zone)].continuous.frictionPenalised;
+    if (status[q] == 0) {
+      if (unknowns) { // out of contact: lambda_t,p = 0 (weakly), as LAGS_C's equation of an open point
+        addTangentialMass(p, c.rho, 0.0, sys);
+      }
+      continue;
+    }
     const Eigen::Vector2d slip = slipAt(p, u);
     const double mu = coulombOf(p);
     const bool sliding = status[q] >= 2;
@@ -124,15 +132,13 @@ void ContinuousPointContactConstraint::frictionEquations(const Eigen::VectorXd& 
         }
       }
     }
-    if (!frictionUnknowns() ||
-        definition_->zones[static_cast<std::size_t>(p.zone)].continuous.frictionPenalised) {
+    if (!unknowns) {
       continue;
     }
     double tdu = 0.0;
     for (const auto& [dof, a] : p.tangentRow) {
       tdu += a * ddu(dof);
     }
-    const double lt = lambdaTAt(p);
     for (std::size_t k = 0; k < p.nodes.size(); ++k) {
       const int i = p.multiplier[k];
       if (i < 0 || p.shape[k] == 0.0) {
@@ -148,16 +154,37 @@ void ContinuousPointContactConstraint::frictionEquations(const Eigen::VectorXd& 
         sys.residual(ti) += wn * (slip(0) + tdu);
         continue;
       }
-      // the multiplier is the sliding pressure mu t_p e (weakly)
-      sys.residual(ti) += wn / c.rho * (c.limit * e - lt);
-      for (std::size_t l = 0; l < p.nodes.size(); ++l) {
+      // the multiplier is the sliding pressure mu t_p e (weakly; addTangentialMass below), whose
+      // threshold follows LAGS_C with NEWTON
+      for (std::size_t l = 0; l < p.nodes.size() && coupled; ++l) {
         const int j = p.multiplier[l];
         if (j >= 0) {
-          sys.mass(ti, nm + j) += wn * p.shape[l] / c.rho;
-          if (coupled) {
-            sys.mass(ti, j) += wn * p.shape[l] * mu * e / c.rho; // -d(mu t_p e)/dlambda_j / rho_t
-          }
+          sys.mass(ti, j) += wn * p.shape[l] * mu * e / c.rho; // -d(mu t_p e)/dlambda_j / rho_t
         }
+      }
+    }
+    if (sliding) {
+      addTangentialMass(p, c.rho, c.limit * e, sys);
+    }
+  }
+}
+
+void ContinuousPointContactConstraint::addTangentialMass(const ContactPoint& p, double rho, double target,
+                                                         MultiplierSystem& sys) const {
+  // (1/rho_t) w N_i (target - lambda_t,p) in the residual, M = (1/rho_t) w N N^T
+  const auto nm = static_cast<Eigen::Index>(multiplierNode_.size());
+  const double lt = lambdaTAt(p);
+  for (std::size_t k = 0; k < p.nodes.size(); ++k) {
+    const int i = p.multiplier[k];
+    if (i < 0) {
+      continue;
+    }
+    const double wn = p.weight * p.shape[k];
+    sys.residual(nm + i) += wn / rho * (target - lt);
+    for (std::size_t l = 0; l < p.nodes.size(); ++l) {
+      const int j = p.multiplier[l];
+      if (j >= 0) {
+        sys.mass(nm + i, nm + j) += wn * p.shape[l] / rho;
       }
     }
   }
