@@ -157,15 +157,15 @@ std::unique_ptr<StepConstraint> makeLac(std::shared_ptr<const ContactDefinition>
 }
 
 // INTEGRATION with contact points off the slave nodes (GAUSS, SIMPSON, NCOTES; AUTO on TRIA6/QUAD8):
-// STANDARD frictionless with the master's normal only.
-void refuseAtPoints(const ContactDefinition& def) {
+// the master's normal only; Coulomb friction in 2D without SANS_GROUP_NO_FR, SEUIL_INIT, GLISSIERE.
+void refuseAtPoints(const ContactDefinition& def, fem::Modelling modelling) {
   const std::string note =
       "contact points off the slave nodes (ContinuousPointContact) are implemented with "
-      "ALGO_CONT='STANDARD', FROTTEMENT='SANS', NORMALE='MAIT', VECT_MAIT=VECT_ESCL='AUTO' "
-      "and LISSAGE='NON'; use INTEGRATION='AUTO' on TRIA3, QUAD4, QUAD9 (SEG2, SEG3) slave "
-      "cells for the rest";
-  if (def.hasFriction()) {
-    notImplemented("FROTTEMENT='COULOMB' with INTEGRATION other than 'AUTO' on linear cells",
+      "NORMALE='MAIT', VECT_MAIT=VECT_ESCL='AUTO', LISSAGE='NON', GLISSIERE='NON', and FROTTEMENT='COULOMB' "
+      "in 2D (D_PLAN, C_PLAN, AXIS) without SANS_GROUP_NO_FR or SEUIL_INIT; use INTEGRATION='AUTO' on "
+      "TRIA3, QUAD4, QUAD9 (SEG2, SEG3) slave cells for the rest";
+  if (def.hasFriction() && modelling == fem::Modelling::ThreeD) {
+    notImplemented("FROTTEMENT='COULOMB' in 3D with INTEGRATION other than 'AUTO' on linear cells",
                    def.settings.frictionAt, note);
   }
   if (def.settings.smoothing) {
@@ -175,8 +175,15 @@ void refuseAtPoints(const ContactDefinition& def) {
     const SourceLocation& at = z.continuous.integration != contact::ContactIntegration::Auto
                                    ? z.continuous.integrationAt
                                    : z.location;
-    if (z.algorithm == ContactAlgorithm::ContinuePenalty) {
-      notImplemented("ALGO_CONT='PENALISATION' with INTEGRATION other than 'AUTO' on linear cells", at, note);
+    if (z.slide) {
+      notImplemented("GLISSIERE='OUI' with INTEGRATION other than 'AUTO' on linear cells", z.location, note);
+    }
+    if (def.hasFriction() && !z.continuous.frictionExcludedGroups.empty()) {
+      notImplemented("SANS_GROUP_NO_FR with INTEGRATION other than 'AUTO' on linear cells",
+                     z.continuous.frictionExcludedAt, note);
+    }
+    if (def.hasFriction() && z.continuous.initialThreshold) {
+      notImplemented("SEUIL_INIT with INTEGRATION other than 'AUTO' on linear cells", z.location, note);
     }
     if (z.normal != contact::NormalChoice::Master || z.masterVector != contact::VectorChoice::Auto ||
         z.slaveVector != contact::VectorChoice::Auto) {
@@ -216,9 +223,11 @@ std::unique_ptr<contact::ContactConstraint> makeContinuous(std::shared_ptr<const
   def = contact::adaptContinuousCoefficients(std::move(def), system.materials(),
                                              fem::spaceDimension(system.model().modelling));
   if (contact::needsContactPoints(*def)) {
-    refuseAtPoints(*def);
-    return std::make_unique<contact::ContinuousPointContactConstraint>(std::move(def), system.dofs(),
-                                                                       system.model().modelling);
+    refuseAtPoints(*def, system.model().modelling);
+    auto p = std::make_unique<contact::ContinuousPointContactConstraint>(std::move(def), system.dofs(),
+                                                                         system.model().modelling);
+    p->setInterpenetrationPolicy(policy);
+    return p;
   }
   auto c = std::make_unique<contact::ContinuousContactConstraint>(std::move(def), system.dofs(),
                                                                   system.model().modelling);

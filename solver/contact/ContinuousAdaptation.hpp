@@ -11,6 +11,12 @@
 // penalty is raised while the interpenetration exceeds it (ContinuousContactConstraint).
 
 #include "solver/contact/ContactDefinition.hpp"
+#include "solver/functions/InstantList.hpp"
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include <memory>
 
@@ -26,6 +32,21 @@ adaptContinuousCoefficients(std::shared_ptr<const ContactDefinition> definition,
 
 // Whether the zone's ADAPTATION scales its coefficients (ADAPT_COEF or TOUT).
 bool adaptsCoefficients(const ContinuousZone& zone);
+
+// The interpenetration control of the penalised zones (ContinuousPenetration.cpp), shared by the
+// nodal and the point formulations: `penetration` the largest interpenetration of each zone at a
+// converged state; the penalty factor of a zone above PENE_MAXI (ADAPT_COEF/TOUT) or above the
+// DEFI_LIST_INST INTERPENETRATION event's is multiplied by 10 (at most COEF_MAXI). Returns the
+// descriptions of the raises (empty: the state is accepted); throws CONTACT_14 (ACTION='ARRET');
+// `alarm` receives CONTACT_15 and CONTACT_16.
+std::vector<std::string> raisePenalties(const ContactDefinition& definition,
+                                        const std::optional<FailurePolicy>& policy,
+                                        const std::vector<double>& penetration, double time,
+                                        std::vector<double>& factor,
+                                        const std::function<void(std::string)>& alarm);
+// The coefficients' adaptation and the interpenetration control, for the resolution's summary.
+std::string penetrationEffects(const ContactDefinition& definition,
+                               const std::optional<FailurePolicy>& policy);
 
 } // namespace contact
 } // namespace stella

@@ -44,6 +44,7 @@
 //   with g < 0, within DIST_MAXI when given; NON: none).
 
 #include "solver/contact/ContactConstraint.hpp"
+#include "solver/contact/ContinuousCoulombLaw.hpp"
 #include "solver/fem/Modelling.hpp"
 #include "solver/functions/InstantList.hpp"
 
@@ -116,6 +117,8 @@ private:
   Eigen::MatrixXd slipsAt(const Eigen::VectorXd& u) const;
   // The threshold pressure |lambda_n| of link k (NEWTON: current LAGS_C; POINT_FIXE: frozen).
   double thresholdPressure(std::size_t k) const;
+  // The Coulomb law's data of a row (ContinuousCoulombLaw.hpp).
+  CoulombPoint coulombPoint(Eigen::Index row) const;
   // The indicator q = base + rho_t s (STANDARD: base the multiplier; PENALISATION: the tangential
   // pressure at the start of the step).
   Eigen::Vector2d indicator(Eigen::Index row, const Eigen::Vector2d& slip) const;

@@ -5,6 +5,7 @@
 // cone is a disc: the indicator q (a vector of the tangent plane) against the threshold.
 
 #include "solver/contact/ContinuousContactConstraint.hpp"
+#include "solver/contact/ContinuousCoulombLaw.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -57,32 +58,26 @@ double ContinuousContactConstraint::thresholdPressure(std::size_t k) const {
   return std::max(0.0, -lagsC_[k]);
 }
 
-Eigen::Vector2d ContinuousContactConstraint::indicator(Eigen::Index row, const Eigen::Vector2d& slip) const {
+CoulombPoint ContinuousContactConstraint::coulombPoint(Eigen::Index row) const {
   const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(row)]);
   const ContinuousZone& z = zoneOfRow(row);
+  CoulombPoint p;
   // STANDARD: the multiplier; PENALISATION: the tangential pressure at the start of the step (the
   // elastic predictor of the penalised stick: the spring keeps the force of the previous steps)
-  const Eigen::Vector2d base = z.frictionPenalised ? lagsFStart_[k] : lagsF_[k];
-  Eigen::Vector2d q = base + frictionCoefficient(z) * slip;
-  for (int j = frictionDirections(row); j < 2; ++j) {
-    q(j) = 0.0; // no friction along an excluded direction
-  }
-  return q;
+  p.base = z.frictionPenalised ? lagsFStart_[k] : lagsF_[k];
+  p.rho = frictionCoefficient(z);
+  p.limit = coulombOfRow(row) * thresholdPressure(k);
+  p.directions = frictionDirections(row);
+  p.senseInStatus = slidingSenseInStatus(row);
+  return p;
+}
+
+Eigen::Vector2d ContinuousContactConstraint::indicator(Eigen::Index row, const Eigen::Vector2d& slip) const {
+  return coulombIndicator(coulombPoint(row), slip);
 }
 
 char ContinuousContactConstraint::frictionStatus(Eigen::Index row, const Eigen::Vector2d& slip) const {
-  const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(row)]);
-  if (frictionDirections(row) == 0) {
-    return 2; // friction excluded on every direction (SANS_GROUP_NO_FR): slides freely
-  }
-  const double limit = coulombOfRow(row) * thresholdPressure(k);
-  // a zero threshold (no pressure yet) slides with no force, whatever the sign: a status from the
-  // sign of a round-off slip would flip-flop
-  const Eigen::Vector2d q = indicator(row, slip);
-  if (q.norm() < limit) {
-    return 1;
-  }
-  return slidingSenseInStatus(row) && q(0) < 0.0 && limit > 0.0 ? 3 : 2;
+  return coulombStatus(coulombPoint(row), slip);
 }
 
 bool ContinuousContactConstraint::slidingSenseInStatus(Eigen::Index row) const {
@@ -91,26 +86,12 @@ bool ContinuousContactConstraint::slidingSenseInStatus(Eigen::Index row) const {
 
 Eigen::Vector2d ContinuousContactConstraint::slidingDirection(Eigen::Index row, char s,
                                                               const Eigen::Vector2d& slip) const {
-  if (slidingSenseInStatus(row)) {
-    return {s == 3 ? -1.0 : 1.0, 0.0}; // the sense is the status's
-  }
-  const Eigen::Vector2d q = indicator(row, slip);
-  const double size = q.norm();
-  return size > 0.0 ? Eigen::Vector2d(q / size) : Eigen::Vector2d::Zero();
+  return coulombSlidingDirection(coulombPoint(row), s, slip);
 }
 
 Eigen::Vector2d ContinuousContactConstraint::tangentialPressure(Eigen::Index row, char s,
                                                                 const Eigen::Vector2d& slip) const {
-  const Eigen::Vector2d q = indicator(row, slip);
-  if (s == 1) {
-    return q;
-  }
-  if (s != 2 && s != 3) {
-    return Eigen::Vector2d::Zero();
-  }
-  const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(row)]);
-  // on the disc, along q / |q| (one direction: in the status's sense)
-  return coulombOfRow(row) * thresholdPressure(k) * slidingDirection(row, s, slip);
+  return coulombPressure(coulombPoint(row), s, slip);
 }
 
 // A sliding row's multiplier is a Newton unknown with the equation lambda_t = mu t e (the return
@@ -297,47 +278,23 @@ double ContinuousContactConstraint::frictionCriterion() const {
   if (before.empty()) {
     return -1.0;
   }
-  double change = 0.0;
-  double scale = 0.0;
-  for (std::size_t i = 0; i < rows_.link.size(); ++i) {
-    const auto k = static_cast<std::size_t>(rows_.link[i]);
-    const double now = std::max(0.0, -lagsC_[k]);
-    scale = std::max(scale, now);
-    if (k < before.size()) {
-      change = std::max(change, std::fabs(now - before[k]));
-    }
+  const auto m = static_cast<Eigen::Index>(rows_.link.size());
+  Eigen::VectorXd was = Eigen::VectorXd::Zero(m);
+  Eigen::VectorXd now(m);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(i)]);
+    now(i) = std::max(0.0, -lagsC_[k]);
+    was(i) = k < before.size() ? before[k] : now(i);
   }
-  if (scale > 0.0) {
-    return change / scale;
-  }
-  return change > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;
+  return frictionThresholdChange(was, now);
 }
 
 bool ContinuousContactConstraint::acceptFriction(const Eigen::VectorXd& u) {
-  const auto& c = definition_->settings.continuous;
-  // change <= RESI_FROT x max |LAGS_C| (none before the first correction)
-  const double criterion = frictionCriterion();
-  if (criterion < 0.0 || criterion <= c.frictionResidual) {
-    return true;
-  }
-  if (!c.frictionFixedPoint) {
-    // NEWTON: the threshold |LAGS_C| still moved at the last correction
-    continuation_ = fmt::format("friction threshold moved by {:.2e} of |LAGS_C| (RESI_FROT {:g}): Newton "
-                                "iterations go on",
-                                criterion, c.frictionResidual);
-    return false;
-  }
-  if (++frictionIterations_ > c.maxFrictionIterations) {
-    throw UserError(
-        Diagnostic::noConvergence(
-            "CONTACT_28",
-            fmt::format(
-                "the friction loop (ALGO_RESO_FROT='POINT_FIXE') did not converge at INST {}: after {} "
-                "friction iterations the threshold |LAGS_C| still changes by {:.2e} of its maximum "
-                "(RESI_FROT {:g})",
-                time_, c.maxFrictionIterations, criterion, c.frictionResidual),
-            definition_->location)
-            .withNote("raise ITER_FROT_MAXI, use ALGO_RESO_FROT='NEWTON', or refine the list of instants"));
+  const FrictionLoop step =
+      frictionLoopStep(definition_->settings.continuous, frictionCriterion(), frictionIterations_, time_,
+                       definition_->location, "", continuation_);
+  if (step != FrictionLoop::NewThreshold) {
+    return step == FrictionLoop::Accept;
   }
   for (std::size_t i = 0; i < rows_.link.size(); ++i) {
     const auto k = static_cast<std::size_t>(rows_.link[i]);
@@ -345,9 +302,6 @@ bool ContinuousContactConstraint::acceptFriction(const Eigen::VectorXd& u) {
   }
   status_ = statusAt(u); // the stick/slip status under the new threshold
   lastStatus_ = status_;
-  continuation_ = fmt::format("friction threshold updated (loop {}, change {:.2e} of |LAGS_C|): Newton "
-                              "iterations go on",
-                              frictionIterations_, criterion);
   return false;
 }
 

@@ -9,7 +9,8 @@
 //   FROT_NEWT  with friction, ALGO_RESO_FROT='NEWTON': max |d|LAGS_C|| of the last correction over
 //              max |LAGS_C| (a step converges at most RESI_FROT); BOUC_FROT with POINT_FIXE: the same
 //              since the threshold of the last friction loop ('-' before the first correction).
-// The free-text note follows them (active nodes, sticking ones, interpenetration).
+// The free-text note follows them (active nodes, sticking ones, interpenetration); the contact points
+// (ContinuousPointContactConstraint) have the same columns, the note counting points.
 
 #include "solver/contact/ContinuousContactConstraint.hpp"
 #include "solver/contact/ContinuousPointContact.hpp"
@@ -73,13 +74,25 @@ std::string ContinuousContactConstraint::iterationNote() const {
 }
 
 std::string ContinuousPointContactConstraint::iterationHeader() const {
-  return headerCell(statusColumn(*definition_)) + headerCell("RESI_GEOM");
+  std::string h = headerCell(statusColumn(*definition_)) + headerCell("RESI_GEOM");
+  if (friction()) {
+    h += headerCell(definition_->settings.continuous.frictionFixedPoint ? "BOUC_FROT" : "FROT_NEWT");
+  }
+  return h;
 }
 
 std::string ContinuousPointContactConstraint::iterationNote() const {
   const int count = statusCount(*definition_, status_, lastStatus_, statusIterations_);
-  return firstCell(count) + realCell(noteGeometry_) +
-         fmt::format(" CONT {} pts act. pene {:.2e}", noteActive_, notePenetration_);
+  std::string cells = firstCell(count) + realCell(noteGeometry_);
+  if (friction()) {
+    int sticking = 0;
+    for (char st : status_) {
+      sticking += st == 1 ? 1 : 0;
+    }
+    return cells + realCell(frictionCriterion()) +
+           fmt::format(" CONT {} pts act. ({} stick) pene {:.2e}", noteActive_, sticking, notePenetration_);
+  }
+  return cells + fmt::format(" CONT {} pts act. pene {:.2e}", noteActive_, notePenetration_);
 }
 
 } // namespace stella::contact

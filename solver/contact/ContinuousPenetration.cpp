@@ -4,7 +4,9 @@
 // and DEFI_LIST_INST ECHEC EVENEMENT='INTERPENETRATION' (ACTION='ADAPT_COEF_PENA': COEF_PENA_CONT
 // raised, at most COEF_MAXI; 'ARRET': the analysis stops). Both act once Newton has converged: the
 // penalty of the zone is multiplied by 10, as the discrete formulation does with E_N, and the
-// Newton iterations go on with it; the factor is kept for the next steps.
+// Newton iterations go on with it; the factor is kept for the next steps. The nodal
+// (ContinuousContactConstraint) and point (ContinuousPointContactConstraint) formulations share
+// raisePenalties(); each measures its own interpenetration (nodes or contact points).
 
 #include "solver/contact/ContinuousAdaptation.hpp"
 #include "solver/contact/ContinuousContactConstraint.hpp"
@@ -22,15 +24,11 @@ constexpr double raise = 10.0;
 
 } // namespace
 
-double ContinuousContactConstraint::penaltyFactor(int zone) const {
-  const auto z = static_cast<std::size_t>(zone);
-  return z < penaltyFactor_.size() ? penaltyFactor_[z] : 1.0;
-}
-
-std::string ContinuousContactConstraint::penetrationEffects() const {
+std::string penetrationEffects(const ContactDefinition& definition,
+                               const std::optional<FailurePolicy>& policy) {
   std::string s;
-  for (std::size_t z = 0; z < definition_->zones.size(); ++z) {
-    const ContactZone& zone = definition_->zones[z];
+  for (std::size_t z = 0; z < definition.zones.size(); ++z) {
+    const ContactZone& zone = definition.zones[z];
     if (zone.resolve && adaptsCoefficients(zone.continuous)) {
       s += fmt::format(", zone {}: ADAPTATION='{}' coefficients x E*/h = {:.6g}", z + 1,
                        zone.continuous.adaptation, zone.continuous.stiffness);
@@ -39,13 +37,77 @@ std::string ContinuousContactConstraint::penetrationEffects() const {
       }
     }
   }
-  if (policy_) {
-    s += policy_->action == FailurePolicy::Action::AdaptPenalty
+  if (policy) {
+    s += policy->action == FailurePolicy::Action::AdaptPenalty
              ? fmt::format(", COEF_PENA_CONT adapted above PENE_MAXI={} (COEF_MAXI={})",
-                           policy_->maxPenetration, policy_->maxCoefficient)
-             : fmt::format(", stop above PENE_MAXI={}", policy_->maxPenetration);
+                           policy->maxPenetration, policy->maxCoefficient)
+             : fmt::format(", stop above PENE_MAXI={}", policy->maxPenetration);
   }
   return s;
+}
+
+std::vector<std::string> raisePenalties(const ContactDefinition& definition,
+                                        const std::optional<FailurePolicy>& policy,
+                                        const std::vector<double>& penetration, double time,
+                                        std::vector<double>& factor,
+                                        const std::function<void(std::string)>& alarm) {
+  const auto& zones = definition.zones;
+  factor.resize(zones.size(), 1.0);
+  std::vector<std::string> raised;
+  for (std::size_t z = 0; z < zones.size(); ++z) {
+    const ContactZone& zone = zones[z];
+    if (!zone.resolve || zone.algorithm != ContactAlgorithm::ContinuePenalty) {
+      continue;
+    }
+    const double pene = z < penetration.size() ? penetration[z] : 0.0;
+    const double penalty = zone.continuous.penalty * factor[z];
+    bool raise10 = adaptsCoefficients(zone.continuous) && zone.continuous.maxPenetration &&
+                   pene > *zone.continuous.maxPenetration;
+    double limit = std::numeric_limits<double>::infinity();
+    if (policy && pene > policy->maxPenetration) {
+      if (policy->action == FailurePolicy::Action::Stop) {
+        throw UserError(
+            Diagnostic::noConvergence(
+                "CONTACT_14",
+                fmt::format("interpenetration {:.3e} above PENE_MAXI = {} at INST {} in zone {} "
+                            "(DEFI_LIST_INST ECHEC EVENEMENT='INTERPENETRATION', ACTION='ARRET')",
+                            pene, policy->maxPenetration, time, z + 1),
+                definition.location)
+                .withNote("raise COEF_PENA_CONT, or use ACTION='ADAPT_COEF_PENA' to let it be raised "
+                          "automatically"));
+      }
+      raise10 = true;
+      limit = policy->maxCoefficient;
+    }
+    if (!raise10) {
+      continue;
+    }
+    const double next = std::min(raise * penalty, std::max(penalty, limit));
+    if (next <= penalty) {
+      alarm(fmt::format("CONTACT_15: interpenetration {:.3e} above PENE_MAXI = {} in zone {} but "
+                        "COEF_PENA_CONT is already at COEF_MAXI = {}: the step is accepted",
+                        pene, policy->maxPenetration, z + 1, policy->maxCoefficient));
+      continue;
+    }
+    factor[z] = next / zone.continuous.penalty;
+    raised.push_back(fmt::format("zone {}: interpenetration {:.3e}, COEF_PENA_CONT {:.6g} -> {:.6g}", z + 1,
+                                 pene, penalty, next));
+  }
+  if (!raised.empty() && policy) {
+    alarm(fmt::format("CONTACT_16: interpenetration above PENE_MAXI = {} at INST {} (EVENEMENT="
+                      "'INTERPENETRATION', ADAPT_COEF_PENA): {}; Newton iterations go on",
+                      policy->maxPenetration, time, fmt::join(raised, "; ")));
+  }
+  return raised;
+}
+
+double ContinuousContactConstraint::penaltyFactor(int zone) const {
+  const auto z = static_cast<std::size_t>(zone);
+  return z < penaltyFactor_.size() ? penaltyFactor_[z] : 1.0;
+}
+
+std::string ContinuousContactConstraint::penetrationEffects() const {
+  return contact::penetrationEffects(*definition_, policy_);
 }
 
 bool ContinuousContactConstraint::acceptPenetration(const Eigen::VectorXd& u) {
@@ -66,46 +128,9 @@ bool ContinuousContactConstraint::acceptPenetration(const Eigen::VectorXd& u) {
       p = std::max(p, -g(i));
     }
   }
-  std::vector<std::string> raised;
-  for (std::size_t z = 0; z < zones.size(); ++z) {
-    const ContactZone& zone = zones[z];
-    if (!zone.resolve || zone.algorithm != ContactAlgorithm::ContinuePenalty) {
-      continue;
-    }
-    const double pene = penetration[z];
-    const double penalty = zone.continuous.penalty * penaltyFactor_[z];
-    bool raise10 = adaptsCoefficients(zone.continuous) && zone.continuous.maxPenetration &&
-                   pene > *zone.continuous.maxPenetration;
-    double limit = std::numeric_limits<double>::infinity();
-    if (policy_ && pene > policy_->maxPenetration) {
-      if (policy_->action == FailurePolicy::Action::Stop) {
-        throw UserError(
-            Diagnostic::noConvergence(
-                "CONTACT_14",
-                fmt::format("interpenetration {:.3e} above PENE_MAXI = {} at INST {} in zone {} "
-                            "(DEFI_LIST_INST ECHEC EVENEMENT='INTERPENETRATION', ACTION='ARRET')",
-                            pene, policy_->maxPenetration, time_, z + 1),
-                definition_->location)
-                .withNote("raise COEF_PENA_CONT, or use ACTION='ADAPT_COEF_PENA' to let it be raised "
-                          "automatically"));
-      }
-      raise10 = true;
-      limit = policy_->maxCoefficient;
-    }
-    if (!raise10) {
-      continue;
-    }
-    const double next = std::min(raise * penalty, std::max(penalty, limit));
-    if (next <= penalty) {
-      noteAlarm(fmt::format("CONTACT_15: interpenetration {:.3e} above PENE_MAXI = {} in zone {} but "
-                            "COEF_PENA_CONT is already at COEF_MAXI = {}: the step is accepted",
-                            pene, policy_->maxPenetration, z + 1, policy_->maxCoefficient));
-      continue;
-    }
-    penaltyFactor_[z] = next / zone.continuous.penalty;
-    raised.push_back(fmt::format("zone {}: interpenetration {:.3e}, COEF_PENA_CONT {:.6g} -> {:.6g}", z + 1,
-                                 pene, penalty, next));
-  }
+  const std::vector<std::string> raised =
+      raisePenalties(*definition_, policy_, penetration, time_, penaltyFactor_,
+                     [this](std::string text) { noteAlarm(std::move(text)); });
   if (raised.empty()) {
     return true;
   }
@@ -116,13 +141,7 @@ bool ContinuousContactConstraint::acceptPenetration(const Eigen::VectorXd& u) {
       coefficient_(i) = zone.continuous.penalty * penaltyFactor(links_[k].zone);
     }
   }
-  const std::string what = fmt::format("{}", fmt::join(raised, "; "));
-  if (policy_) {
-    noteAlarm(fmt::format("CONTACT_16: interpenetration above PENE_MAXI = {} at INST {} (EVENEMENT="
-                          "'INTERPENETRATION', ADAPT_COEF_PENA): {}; Newton iterations go on",
-                          policy_->maxPenetration, time_, what));
-  }
-  continuation_ = fmt::format("penalty raised ({}): Newton iterations go on", what);
+  continuation_ = fmt::format("penalty raised ({}): Newton iterations go on", fmt::join(raised, "; "));
   return false;
 }
 

@@ -4,6 +4,7 @@
 
 #include "solver/contact/CellProjection.hpp"
 #include "solver/contact/ContactResultField.hpp"
+#include "solver/contact/ContinuousAdaptation.hpp"
 #include "solver/contact/ContinuousIntegrationRule.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/fem/ReferenceElement.hpp"
@@ -22,15 +23,20 @@ std::string ContinuousPointContactConstraint::resolutionEffects() const {
   for (const auto& z : definition_->zones) {
     if (z.resolve) {
       const auto& c = z.continuous;
-      zones.push_back(fmt::format(
-          "STANDARD COEF_CONT={} INTEGRATION='{}'{}", c.augmentation, integrationName(c.integration),
-          c.integrationOrder > 0 ? fmt::format(" ORDRE_INT={}", c.integrationOrder) : ""));
+      zones.push_back(
+          fmt::format("{} INTEGRATION='{}'{}",
+                      z.algorithm == ContactAlgorithm::ContinuePenalty
+                          ? fmt::format("PENALISATION COEF_PENA_CONT={}", c.penalty)
+                          : fmt::format("STANDARD COEF_CONT={}", c.augmentation),
+                      integrationName(c.integration),
+                      c.integrationOrder > 0 ? fmt::format(" ORDRE_INT={}", c.integrationOrder) : ""));
     }
   }
-  return fmt::format("{} (LAGS_C on the slave nodes, {} contact points), ALGO_RESO_CONT={}",
+  return fmt::format("{} (LAGS_C on the slave nodes, {} contact points), ALGO_RESO_CONT={}{}",
                      fmt::join(zones, "; "), points_.size(),
                      definition_->settings.continuous.statusLoop == StatusLoop::Newton ? "NEWTON"
-                                                                                       : "POINT_FIXE");
+                                                                                       : "POINT_FIXE",
+                     penetrationEffects(*definition_, policy_));
 }
 
 double ContinuousPointContactConstraint::lambdaAt(const ContactPoint& p) const {
@@ -51,6 +57,15 @@ double ContinuousPointContactConstraint::gapAt(const ContactPoint& p, const Eige
   return g;
 }
 
+double ContinuousPointContactConstraint::pressureAt(const ContactPoint& p, double gap) const {
+  return p.penalised ? p.rho * gap : lambdaAt(p) + p.rho * gap;
+}
+
+double ContinuousPointContactConstraint::indicatorAt(const ContactPoint& p, const Eigen::VectorXd& u) const {
+  const double g = gapAt(p, u);
+  return p.penalised ? g : lambdaAt(p) + p.rho * g;
+}
+
 std::vector<char> ContinuousPointContactConstraint::statusAt(const Eigen::VectorXd& u) const {
   std::vector<char> s(points_.size(), 0);
   for (std::size_t q = 0; q < points_.size(); ++q) {
@@ -58,7 +73,10 @@ std::vector<char> ContinuousPointContactConstraint::statusAt(const Eigen::Vector
     if (q < frozen_.size() && frozen_[q] >= 0) {
       s[q] = static_cast<char>(frozen_[q]);
     } else if (p.paired && p.weight != 0.0) {
-      s[q] = lambdaAt(p) + p.rho * gapAt(p, u) < 0.0 ? 1 : 0;
+      s[q] = indicatorAt(p, u) < 0.0 ? 1 : 0;
+    }
+    if (s[q] != 0 && friction()) {
+      s[q] = coulombStatus(coulombAt(q), slipAt(p, u));
     }
   }
   return s;
@@ -73,7 +91,9 @@ const std::vector<char>& ContinuousPointContactConstraint::currentStatus(const E
 
 void ContinuousPointContactConstraint::beginStep(const Eigen::VectorXd& u, double time) {
   lambda_ = lambdaStart_; // a step cut restarts from the multipliers of its start
+  lambdaT_ = lambdaTStart_;
   ContactConstraint::beginStep(u, time);
+  resetFrictionStep();
   statusIterations_ = 0;
   changes_.assign(points_.size(), 0);
   frozen_.assign(points_.size(), -1);
@@ -115,7 +135,7 @@ void ContinuousPointContactConstraint::addForces(const Eigen::VectorXd& u, Eigen
     if (on) {
       ++active;
       penetration = std::max(penetration, -g);
-      const double pressure = lambdaAt(p) + p.rho * g; // -w (lambda + rho g) grad g
+      const double pressure = pressureAt(p, g); // -w (lambda + rho g) grad g
       for (const auto& [e, a] : p.row) {
         forces(e) -= p.weight * pressure * a;
       }
@@ -128,30 +148,21 @@ void ContinuousPointContactConstraint::addForces(const Eigen::VectorXd& u, Eigen
         }
       }
     }
+    if (friction()) {
+      addFrictionForces(q, status[q], u, forces, tangent);
+    }
   }
   noteActive_ = active;
   notePenetration_ = penetration;
 }
 
-void ContinuousPointContactConstraint::correct(const Eigen::VectorXd& u, Eigen::VectorXd& ddu,
-                                               Eigen::VectorXd& dlambda, SaddleSolver& solver) {
-  const std::vector<char> status = currentStatus(u);
-  useInitial_ = false;
-  lastStatus_ = status;
-  const auto nm = static_cast<Eigen::Index>(multiplierNode_.size());
-  if (nm == 0) {
-    return;
-  }
-  const Eigen::Index n = ddu.size();
-  // B (rows: multipliers) on the equations, M, G and B ddu
-  std::vector<std::vector<std::pair<int, double>>> b(static_cast<std::size_t>(nm));
-  Eigen::MatrixXd mass = Eigen::MatrixXd::Zero(nm, nm);
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(nm);
-  std::vector<char> used(static_cast<std::size_t>(nm), 0);
+void ContinuousPointContactConstraint::normalEquations(const Eigen::VectorXd& u, const Eigen::VectorXd& ddu,
+                                                       const std::vector<char>& status,
+                                                       MultiplierSystem& sys) const {
   for (std::size_t q = 0; q < points_.size(); ++q) {
     const ContactPoint& p = points_[q];
-    if (!p.paired || p.weight == 0.0) {
-      continue;
+    if (!p.paired || p.weight == 0.0 || p.penalised) {
+      continue; // a penalised point's pressure is eliminated: no equation
     }
     if (status[q] != 0) {
       const double g = gapAt(p, u);
@@ -166,91 +177,137 @@ void ContinuousPointContactConstraint::correct(const Eigen::VectorXd& u, Eigen::
         }
         const double c = p.weight * p.shape[k];
         for (const auto& [e, a] : p.row) {
-          b[static_cast<std::size_t>(i)].emplace_back(e, c * a);
+          sys.row[static_cast<std::size_t>(i)].emplace_back(e, c * a);
         }
-        rhs(i) += c * (g + adu);
-        used[static_cast<std::size_t>(i)] = 1;
+        sys.residual(i) += c * (g + adu);
+        sys.used[static_cast<std::size_t>(i)] = 1;
       }
     } else {
+      const double lp = lambdaAt(p);
       for (std::size_t k = 0; k < p.nodes.size(); ++k) {
+        const int i = p.multiplier[k];
+        if (i < 0) {
+          continue;
+        }
+        sys.residual(i) -= p.weight * p.shape[k] * lp / p.rho; // -(1/rho) w N_i lambda_p
         for (std::size_t l = 0; l < p.nodes.size(); ++l) {
-          if (p.multiplier[k] >= 0 && p.multiplier[l] >= 0) {
-            mass(p.multiplier[k], p.multiplier[l]) += p.weight * p.shape[k] * p.shape[l] / p.rho;
+          if (p.multiplier[l] >= 0) {
+            sys.mass(i, p.multiplier[l]) += p.weight * p.shape[k] * p.shape[l] / p.rho;
           }
         }
       }
     }
   }
+}
+
+void ContinuousPointContactConstraint::correct(const Eigen::VectorXd& u, Eigen::VectorXd& ddu,
+                                               Eigen::VectorXd& dlambda, SaddleSolver& solver) {
+  const std::vector<char> status = currentStatus(u);
+  useInitial_ = false;
+  lastStatus_ = status;
+  const auto nm = static_cast<Eigen::Index>(multiplierNode_.size());
+  if (nm == 0) {
+    return;
+  }
+  recordThreshold();
+  const Eigen::Index n = ddu.size();
+  const Eigen::Index nu = frictionUnknowns() ? 2 * nm : nm; // LAGS_C, then LAGS_F
+  MultiplierSystem sys;
+  sys.row.resize(static_cast<std::size_t>(nu));
+  sys.column.resize(static_cast<std::size_t>(nu));
+  sys.mass = Eigen::MatrixXd::Zero(nu, nu);
+  sys.residual = Eigen::VectorXd::Zero(nu);
+  sys.used.assign(static_cast<std::size_t>(nu), 0);
+  normalEquations(u, ddu, status, sys);
+  frictionEquations(u, ddu, status, sys);
   addContactIterations(1);
   // The unknowns: the multipliers of the nodes with a point in contact in their cells (a row of
   // B); the others are 0, as in the nodal formulation (their consistent equation, the block M of
   // the points out of contact, is singular with rules of negative weights or too few points, e.g.
   // GAUSS 3 on TRIA6, when no point is in contact).
   std::vector<Eigen::Index> free;
-  for (Eigen::Index i = 0; i < nm; ++i) {
-    if (used[static_cast<std::size_t>(i)] != 0) {
+  for (Eigen::Index i = 0; i < nu; ++i) {
+    if (sys.used[static_cast<std::size_t>(i)] != 0) {
       free.push_back(i);
-    } else {
-      lambda_[static_cast<std::size_t>(i)] = 0.0;
+      continue;
     }
+    double& value =
+        i < nm ? lambda_[static_cast<std::size_t>(i)] : lambdaT_[static_cast<std::size_t>(i - nm)];
+    sys.residual += sys.mass.col(i) * value; // the residuals with this multiplier set to 0
+    value = 0.0;
   }
-  const Eigen::VectorXd lambda = Eigen::Map<const Eigen::VectorXd>(lambda_.data(), nm);
-  rhs -= mass * lambda;
   const auto nf = static_cast<Eigen::Index>(free.size());
-  std::vector<Eigen::Index> coupled; // positions in `free` with a row of B
-  for (Eigen::Index j = 0; j < nf; ++j) {
-    if (used[static_cast<std::size_t>(free[static_cast<std::size_t>(j)])] != 0) {
-      coupled.push_back(j);
-    }
-  }
+  const auto unknown = [&](Eigen::Index j) {
+    return static_cast<std::size_t>(free[static_cast<std::size_t>(j)]);
+  };
   Eigen::MatrixXd s(nf, nf);
   Eigen::VectorXd r(nf);
+  std::vector<Eigen::Index> coupled; // positions in `free` with a force column
   for (Eigen::Index i = 0; i < nf; ++i) {
-    r(i) = rhs(free[static_cast<std::size_t>(i)]);
+    r(i) = sys.residual(free[static_cast<std::size_t>(i)]);
     for (Eigen::Index j = 0; j < nf; ++j) {
-      s(i, j) = mass(free[static_cast<std::size_t>(i)], free[static_cast<std::size_t>(j)]);
+      s(i, j) = sys.mass(free[static_cast<std::size_t>(i)], free[static_cast<std::size_t>(j)]);
+    }
+    if (!sys.row[unknown(i)].empty() || !sys.column[unknown(i)].empty()) {
+      coupled.push_back(i);
     }
   }
-  const auto rowOf = [&](Eigen::Index j) -> const std::vector<std::pair<int, double>>& {
-    return b[static_cast<std::size_t>(free[static_cast<std::size_t>(j)])];
+  // S += B K^-1 C^T by blocks of columns (C = B + column)
+  const auto addColumn = [&](Eigen::Index j, double factor, auto&& v) {
+    for (const auto& [e, a] : sys.row[unknown(j)]) {
+      v(e) += factor * a;
+    }
+    for (const auto& [e, a] : sys.column[unknown(j)]) {
+      v(e) += factor * a;
+    }
   };
-  constexpr std::size_t block = 64; // S += B K^-1 B^T by blocks of columns
+  constexpr std::size_t block = 64;
   for (std::size_t first = 0; first < coupled.size(); first += block) {
     const std::size_t cols = std::min(block, coupled.size() - first);
     Eigen::MatrixXd x = Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(cols));
     for (std::size_t j = 0; j < cols; ++j) {
-      for (const auto& [e, a] : rowOf(coupled[first + j])) {
-        x(e, static_cast<Eigen::Index>(j)) += a;
-      }
+      addColumn(coupled[first + j], 1.0, x.col(static_cast<Eigen::Index>(j)));
     }
     solver.solveHomogeneous(x);
     for (Eigen::Index i : coupled) {
-      for (const auto& [e, a] : rowOf(i)) {
+      for (const auto& [e, a] : sys.row[unknown(i)]) {
         for (std::size_t j = 0; j < cols; ++j) {
           s(i, coupled[first + j]) += a * x(e, static_cast<Eigen::Index>(j));
         }
       }
     }
   }
-  const Eigen::LDLT<Eigen::MatrixXd> ldlt(0.5 * (s + s.transpose()));
-  const Eigen::VectorXd d = ldlt.vectorD();
-  const double scale = nf > 0 ? d.cwiseAbs().maxCoeff() : 0.0;
-  for (Eigen::Index p = 0; p < nf; ++p) {
-    if (!(std::fabs(d(p)) > 1e-12 * scale)) {
-      const Eigen::PermutationMatrix<Eigen::Dynamic> perm(ldlt.transpositionsP());
-      const Eigen::PermutationMatrix<Eigen::Dynamic> inverse(perm.inverse());
-      redundant(static_cast<int>(free[static_cast<std::size_t>(inverse.indices()(p))]));
+  Eigen::VectorXd dl;
+  if (nf == 0) {
+    dl = Eigen::VectorXd();
+  } else if (sys.symmetric) {
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(0.5 * (s + s.transpose()));
+    const Eigen::VectorXd d = ldlt.vectorD();
+    const double scale = d.cwiseAbs().maxCoeff();
+    for (Eigen::Index p = 0; p < nf; ++p) {
+      if (!(std::fabs(d(p)) > 1e-12 * scale)) {
+        const Eigen::PermutationMatrix<Eigen::Dynamic> perm(ldlt.transpositionsP());
+        const Eigen::PermutationMatrix<Eigen::Dynamic> inverse(perm.inverse());
+        redundant(static_cast<int>(unknown(inverse.indices()(p)) % static_cast<std::size_t>(nm)));
+      }
     }
+    dl = ldlt.solve(r);
+  } else {
+    // ALGO_RESO_FROT='NEWTON' with sliding points: the only non-symmetric factorisation (dense, of
+    // the multipliers); K itself stays symmetric.
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(s);
+    if (!lu.isInvertible()) {
+      redundant(static_cast<int>(unknown(0) % static_cast<std::size_t>(nm)));
+    }
+    dl = lu.solve(r);
   }
-  const Eigen::VectorXd dl = nf > 0 ? Eigen::VectorXd(ldlt.solve(r)) : Eigen::VectorXd();
   Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
   bool any = false;
   for (Eigen::Index j = 0; j < nf; ++j) {
-    lambda_[static_cast<std::size_t>(free[static_cast<std::size_t>(j)])] += dl(j);
-    for (const auto& [e, a] : rowOf(j)) {
-      f(e) += a * dl(j);
-      any = true;
-    }
+    const std::size_t i = unknown(j);
+    (i < static_cast<std::size_t>(nm) ? lambda_[i] : lambdaT_[i - static_cast<std::size_t>(nm)]) += dl(j);
+    any = any || !sys.row[i].empty() || !sys.column[i].empty();
+    addColumn(j, dl(j), f);
   }
   if (!any) {
     return;
@@ -284,8 +341,13 @@ bool ContinuousPointContactConstraint::acceptResolution(const Eigen::VectorXd& u
   const std::vector<char> now = statusAt(u);
   const bool newton = c.statusLoop == StatusLoop::Newton;
   const std::vector<char>& used = newton ? lastStatus_ : status_;
+  penalisedPressures(u);
   if (points_.empty() || now == used || (newton && lastStatus_.empty() && now == status_)) {
-    return true;
+    if ((!friction() || acceptFriction(u)) && acceptPenetration(u)) {
+      acceptFrictionStep(u); // the tangential pressures of the state accepted
+      return true;
+    }
+    return false;
   }
   int changed = 0;
   int frozen = 0;
@@ -299,7 +361,8 @@ bool ContinuousPointContactConstraint::acceptResolution(const Eigen::VectorXd& u
     const std::string& adaptation =
         definition_->zones[static_cast<std::size_t>(points_[q].zone)].continuous.adaptation;
     if (++changes_[q] >= 4 && (adaptation == "CYCLAGE" || adaptation == "TOUT")) {
-      frozen_[q] = lambdaAt(points_[q]) < 0.0 ? 1 : 0;
+      const ContactPoint& p = points_[q];
+      frozen_[q] = (p.penalised ? gapAt(p, u) : lambdaAt(p)) < 0.0 ? 1 : 0;
       ++frozen;
     }
   }
@@ -334,6 +397,62 @@ bool ContinuousPointContactConstraint::acceptResolution(const Eigen::VectorXd& u
   return false;
 }
 
+bool ContinuousPointContactConstraint::acceptPenetration(const Eigen::VectorXd& u) {
+  std::vector<double> penetration(definition_->zones.size(), 0.0);
+  bool any = false;
+  for (const ContactPoint& p : points_) {
+    if (p.paired && p.penalised && p.weight != 0.0) {
+      auto& d = penetration[static_cast<std::size_t>(p.zone)];
+      d = std::max(d, -gapAt(p, u));
+      any = true;
+    }
+  }
+  if (!any) {
+    return true;
+  }
+  const std::vector<std::string> raised =
+      raisePenalties(*definition_, policy_, penetration, time_, penaltyFactor_,
+                     [this](std::string text) { noteAlarm(std::move(text)); });
+  if (raised.empty()) {
+    return true;
+  }
+  for (ContactPoint& p : points_) {
+    if (p.penalised) {
+      p.rho = definition_->zones[static_cast<std::size_t>(p.zone)].continuous.penalty *
+              penaltyFactor_[static_cast<std::size_t>(p.zone)];
+    }
+  }
+  continuation_ = fmt::format("penalty raised ({}): Newton iterations go on", fmt::join(raised, "; "));
+  return false;
+}
+
+void ContinuousPointContactConstraint::penalisedPressures(const Eigen::VectorXd& u) {
+  if (std::find(penalisedNode_.begin(), penalisedNode_.end(), 1) == penalisedNode_.end()) {
+    return;
+  }
+  const std::vector<char> status = statusAt(u);
+  std::vector<double> pressure(multiplierNode_.size(), 0.0);
+  std::vector<double> weight(multiplierNode_.size(), 0.0);
+  for (std::size_t q = 0; q < points_.size(); ++q) {
+    const ContactPoint& p = points_[q];
+    if (!p.paired || !p.penalised) {
+      continue;
+    }
+    const double value = status[q] != 0 ? pressureAt(p, gapAt(p, u)) : 0.0;
+    for (std::size_t k = 0; k < p.nodes.size(); ++k) {
+      if (p.multiplier[k] >= 0) {
+        pressure[static_cast<std::size_t>(p.multiplier[k])] += p.weight * p.shape[k] * value;
+        weight[static_cast<std::size_t>(p.multiplier[k])] += p.weight * p.shape[k];
+      }
+    }
+  }
+  for (std::size_t i = 0; i < multiplierNode_.size(); ++i) {
+    if (penalisedNode_[i] != 0) {
+      lambda_[i] = weight[i] > 0.0 ? pressure[i] / weight[i] : 0.0;
+    }
+  }
+}
+
 void ContinuousPointContactConstraint::nodalForces(const Eigen::VectorXd& u, std::vector<double>& force,
                                                    std::vector<char>& touching) const {
   force.assign(multiplierNode_.size(), 0.0);
@@ -344,7 +463,7 @@ void ContinuousPointContactConstraint::nodalForces(const Eigen::VectorXd& u, std
     if (status[q] == 0) {
       continue;
     }
-    const double pressure = lambdaAt(p) + p.rho * gapAt(p, u);
+    const double pressure = pressureAt(p, gapAt(p, u));
     for (std::size_t k = 0; k < p.nodes.size(); ++k) {
       const int i = p.multiplier[k];
       if (i >= 0 && p.shape[k] != 0.0) {
@@ -370,12 +489,15 @@ std::vector<LinkState> ContinuousPointContactConstraint::resolvedStates(const Ei
       states[r].status = LinkStatus::Sliding;
     }
   }
+  frictionStates(u, states);
   return states;
 }
 
 void ContinuousPointContactConstraint::accepted(const std::vector<LinkState>& rowStates) {
   (void)rowStates;
   lambdaStart_ = lambda_;
+  lambdaTStart_ = lambdaT_;
+  pressureTStart_ = pressureT_;
   contactStart_ = status_;
   firstStep_ = false;
 }
@@ -396,12 +518,18 @@ void ContinuousPointContactConstraint::store(ResultStep& step) const {
   }
   std::vector<std::string> extra;
   extra.push_back("LAGS_C");
+  if (friction()) {
+    extra.push_back("LAGS_F1");
+  }
   const std::size_t c0 = depl.componentCount();
   const auto out = withMultiplierComponents(depl, extra);
   for (std::size_t i = 0; i < multiplierNode_.size(); ++i) {
     const auto n = static_cast<std::size_t>(multiplierNode_[i]);
     out->value(n, c0) = lambda_[i];
     out->setDefined(n, c0);
+  }
+  if (friction()) {
+    storeFriction(*out, c0 + 1);
   }
   step.fields["DEPL"] = out;
 }

@@ -96,7 +96,8 @@ void ContinuousPointContactConstraint::buildPoints() {
         const Eigen::VectorXd n = ref.values(xi);
         ContactPoint p;
         p.zone = static_cast<int>(z);
-        p.rho = zone.continuous.augmentation;
+        p.penalised = zone.algorithm == ContactAlgorithm::ContinuePenalty;
+        p.rho = p.penalised ? zone.continuous.penalty : zone.continuous.augmentation;
         p.weight = rule.weights[static_cast<std::size_t>(g)] * jacobian(ref, x, xi);
         double r = 0.0;
         for (std::size_t k = 0; k < nodes.size(); ++k) {
@@ -113,7 +114,20 @@ void ContinuousPointContactConstraint::buildPoints() {
     }
   }
   checkPointCount();
+  penalisedNode_.assign(multiplierNode_.size(), 0);
+  for (const ContactPoint& p : points_) {
+    for (int i : p.multiplier) {
+      if (i >= 0 && p.penalised) {
+        penalisedNode_[static_cast<std::size_t>(i)] = 1;
+      }
+    }
+  }
+  penaltyFactor_.assign(definition_->zones.size(), 1.0);
   lambda_.assign(multiplierNode_.size(), 0.0);
+  lambdaT_.assign(multiplierNode_.size(), 0.0);
+  lambdaTStart_ = lambdaT_;
+  pressureT_.assign(points_.size(), 0.0);
+  pressureTStart_ = pressureT_;
   lambdaStart_ = lambda_;
   status_.assign(points_.size(), 0);
   contactStart_ = status_;
@@ -126,7 +140,7 @@ void ContinuousPointContactConstraint::checkPointCount() const {
     std::set<int> multipliers;
     long count = 0;
     for (const ContactPoint& p : points_) {
-      if (p.zone == static_cast<int>(z)) {
+      if (p.zone == static_cast<int>(z) && !p.penalised) { // penalised: no multiplier unknowns
         ++count;
         multipliers.insert(p.multiplier.begin(), p.multiplier.end());
       }
@@ -168,6 +182,7 @@ void ContinuousPointContactConstraint::pairPoints() {
     const ContactZone& zone = definition_->zones[static_cast<std::size_t>(p.zone)];
     p.paired = false;
     p.row.clear();
+    p.tangentRow.clear();
     Point3 x{0, 0, 0};
     Point3 reference{0, 0, 0};
     std::set<CellId> candidates;
@@ -210,6 +225,9 @@ void ContinuousPointContactConstraint::pairPoints() {
     p.paired = true;
     p.gap = dot(n, x - cp.x);
     const auto masterNodes = mesh.cellNodes(static_cast<CellId>(best.cell));
+    // the gap's gradient A_p along n; with friction (2D) the slip's T_p along t = n turned by +90 degrees
+    const Point3 t{-n[1], n[0], 0.0};
+    p.tangent = {t[0], t[1], t[2]};
     for (int c = 0; c < nc; ++c) {
       const auto cc = static_cast<std::size_t>(c);
       for (std::size_t k = 0; k < p.nodes.size(); ++k) {
@@ -217,11 +235,17 @@ void ContinuousPointContactConstraint::pairPoints() {
         if (e >= 0 && p.shape[k] != 0.0 && n[cc] != 0.0) {
           p.row.emplace_back(e, p.shape[k] * n[cc]);
         }
+        if (e >= 0 && p.shape[k] != 0.0 && t[cc] != 0.0 && friction()) {
+          p.tangentRow.emplace_back(e, p.shape[k] * t[cc]);
+        }
       }
       for (std::size_t j = 0; j < masterNodes.size(); ++j) {
         const int e = dofs_.dof(masterNodes[j], c);
         if (e >= 0 && cp.shape.n[j] != 0.0 && n[cc] != 0.0) {
           p.row.emplace_back(e, -cp.shape.n[j] * n[cc]);
+        }
+        if (e >= 0 && cp.shape.n[j] != 0.0 && t[cc] != 0.0 && friction()) {
+          p.tangentRow.emplace_back(e, -cp.shape.n[j] * t[cc]);
         }
       }
     }
