@@ -134,6 +134,9 @@ private:
   // The forces of the current step so far: the new loads and the constraint's forces at the
   // step start, then each iteration's reference (judges when a reference has vanished).
   double stepScale_ = 0.0;
+  // max |K_ii| of the structure's last factorised tangent: with the largest |u|, the scale of the
+  // round-off of the internal forces (relativeTest in NewtonDriver.cpp).
+  double stiffnessScale_ = 0.0;
   // The RESI_GLOB_RELA reference of an iteration: the largest of |F_ext - reactions| on the free
   // DOFs, |F_int| on the eliminated ones and |constraint forces| on every DOF, each apart, so that
   // a contact force and the reaction of the fixed node it acts on do not cancel.

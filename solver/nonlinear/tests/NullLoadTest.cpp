@@ -135,5 +135,38 @@ TEST(NullLoad, WithoutAnyReferenceTheRunStops) {
   EXPECT_NE(maxi->mess().find("RESI_GLOB_MAXI <= 1.000e-08 (given)"), std::string::npos) << maxi->mess();
 }
 
+// 3) A stiff cube (E = 2.1e7) moved rigidly by DX = 0.2 t imposed on one face, nothing else: no
+//    force anywhere, so the reference of RESI_GLOB_RELA is the round-off of the internal forces
+//    (eps x K x u, about 1e-9 here, above machine epsilon). Before the round-off floor of
+//    relativeTest the steps never converged (a round-off residual against 1e-6 of a round-off
+//    reference), as in the first steps of testcases/ssnv506_indentation/ssnv506_h25_lac before
+//    its first LAC patch comes into contact.
+TEST(NullLoad, ARigidMotionWithoutLoadConvergesAtTheRoundOffOfTheInternalForces) {
+  const std::string comm = R"(
+DEBUT()
+M = LIRE_MAILLAGE(FORMAT='GMSH', UNITE=20)
+MO = AFFE_MODELE(MAILLAGE=M, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='3D'))
+STIFF = DEFI_MATERIAU(ELAS=_F(E=2.1e7, NU=0.3))
+CM = AFFE_MATERIAU(MAILLAGE=M, AFFE=_F(TOUT='OUI', MATER=STIFF))
+BC = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=(_F(GROUP_MA='Y0', DY=0.0), _F(GROUP_MA='Z0', DZ=0.0)))
+MOVE = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='X0', DX=0.2))
+RAMP = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0))
+TIMES = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, NOMBRE=2))
+R = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, EXCIT=(_F(CHARGE=BC), _F(CHARGE=MOVE, FONC_MULT=RAMP)),
+                  INCREMENT=_F(LIST_INST=TIMES))
+FIN()
+)";
+  auto run = runStudy("null_load_rigid", comm, "testcases/plate_plasticity/hexa8.msh");
+  ASSERT_EQ(run->failure(), FailureKind::None) << run->mess();
+  const Result& r = *run->result("R");
+  EXPECT_EQ(r.steps.size(), 3u); // no step cut
+  EXPECT_NEAR(nodeValue(r, 0.5, "N8", 0), 0.1, 1e-12);
+  EXPECT_NEAR(nodeValue(r, 1.0, "N8", 0), 0.2, 1e-12);
+  EXPECT_NEAR(nodeValue(r, 1.0, "N8", 1), 0.0, 1e-12);
+  EXPECT_NE(run->mess().find("the round-off of the internal forces, 1e-12 x max K_ii x max |u|"),
+            std::string::npos)
+      << run->mess();
+}
+
 } // namespace
 } // namespace stella

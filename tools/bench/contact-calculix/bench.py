@@ -18,8 +18,13 @@ formulation's CONTRAINTE, GCP with RESI_ABSO 1e-8 mm for hertz2d and 1e-9 mm for
 contact status in the Newton loop or in a fixed-point loop); CalculiX with the contact pairs of
 --ccx-types (surface to surface, node to surface). Each run's steps, Newton, contact and geometric
 iterations are read from stella's message file; a Markdown table ends the output.
+LAC (issue 17, doc/bench/lac-calculix.md): --variants lac,lac_scotch (block3d only: the slave
+face cut by CREA_MAILLAGE/DECOUPE_LAC, one pressure per patch) against --ccx-types mortar
+(CalculiX's TYPE=MORTAR); --block NB,NH changes the cubes; every CalculiX run is killed above
+--ccx-memory-gib of resident memory (3 by default).
 Usage: bench.py [--stella build/bin/stella] [--cases hertz2d,block3d,overhead] [--codes ccx,stella]
-                [--variants contrainte,gcp,gcp_elas,continue,continue_pf] [--ccx-types s2s,n2s]
+                [--variants contrainte,gcp,gcp_elas,continue,continue_pf,lac,lac_scotch]
+                [--ccx-types s2s,n2s,mortar] [--block 23,24] [--ccx-memory-gib 3]
                 [--repeats N|hertz2d:N,block3d:M] [--ccx-repeats ...] [--work /tmp/stella-ccx-bench]
 Both codes run on one core (OMP_NUM_THREADS=1); times are wall-clock of the whole run (reading
 the input, meshing data, solving, writing results) and the CPU time (user + sys) of the process.
@@ -27,7 +32,6 @@ the input, meshing data, solving, writing results) and the CPU time (user + sys)
 import argparse
 import math
 import os
-import resource
 import subprocess
 import sys
 import time
@@ -46,16 +50,44 @@ R_HERTZ, D_HERTZ = 50.0, 1.0  # indenter radius, imposed approach of the cut (mm
 D_BLOCK = 0.02  # block3d: imposed shortening of the 20 mm stack
 
 
-def run(cmd, cwd, log):
+# The peak resident memory (MiB) of the last run() and the resident-memory limit (GiB) of the
+# CalculiX runs (--ccx-memory-gib): CalculiX 2.20's MORTAR contact on block3d grew past 21 GB of
+# resident memory in its second iteration and was killed by the kernel (25 Nov 2026).
+LAST_RSS_MB = [0.0]
+CCX_MEMORY_GIB = [3.0]
+
+
+def resident_gib(pid):
+    try:
+        for line in Path(f"/proc/{pid}/status").read_text().splitlines():
+            if line.startswith("VmRSS:"):
+                return int(line.split()[1]) / 2**20
+    except OSError:
+        pass
+    return 0.0
+
+
+def run(cmd, cwd, log, memory_gib=None):
+    """Runs cmd on one thread: (return code, wall s, CPU s of the process). With memory_gib, the
+    process is killed (SIGKILL, return code -9) as soon as its resident memory passes it (polled
+    every 0.2 s: an address-space limit would stop CalculiX at once, it reserves far more than it
+    touches)."""
     env = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1")
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
     with open(log, "w") as out:
-        rc = subprocess.call(cmd, cwd=cwd, stdout=out, stderr=subprocess.STDOUT, env=env)
+        p = subprocess.Popen(cmd, cwd=cwd, stdout=out, stderr=subprocess.STDOUT, env=env)
+        while True:
+            pid, status, usage = os.wait4(p.pid, os.WNOHANG if memory_gib else 0)
+            if pid:
+                break
+            if resident_gib(p.pid) > memory_gib:
+                p.kill()
+                out.write(f"\nbench.py: killed, resident memory above {memory_gib} GiB\n")
+            time.sleep(0.2)
+        p.returncode = os.waitstatus_to_exitcode(status)
     wall = time.perf_counter() - t0
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    return rc, wall, cpu
+    LAST_RSS_MB[0] = usage.ru_maxrss / 1024.0
+    return p.returncode, wall, usage.ru_utime + usage.ru_stime
 
 
 # ---------------------------------------------------------------- meshes
@@ -77,7 +109,7 @@ def block_mesh(work, nb, nh, merged=False):
 
 
 # ---------------------------------------------------------------- CalculiX side
-CCX_TYPES = {"s2s": "SURFACE TO SURFACE", "n2s": "NODE TO SURFACE"}
+CCX_TYPES = {"s2s": "SURFACE TO SURFACE", "n2s": "NODE TO SURFACE", "mortar": "MORTAR"}
 
 
 def ccx_contact(slave, master, kind="s2s"):
@@ -155,12 +187,14 @@ CSTR
     write_deck(mesh, d / "block.inp", ["BAS", "HAUT"], {"BAS": (E, NU), "HAUT": (E, NU)},
                ["SYM_X", "SYM_Y", "BAS_Z0", "HAUT_Z1", "HAUT_BAS"], {"CSLAVE": "HAUT_BAS", "CMASTER": "BAS_HAUT"},
                body)
-    rc, wall, cpu = run(["ccx", "block"], d, d / "ccx.log")
+    rc, wall, cpu = run(["ccx", "block"], d, d / "ccx.log", CCX_MEMORY_GIB[0])
+    if rc != 0 or not (d / "block.dat").read_text().strip():
+        return dict(rc=rc, wall=wall, cpu=cpu, rss_mb=LAST_RSS_MB[0], failed="no result (see ccx.log)")
     force = ccx_total_force(d / "block.dat")
     press = ccx_node_values(d / "block.frd", "CONTACT", 3)
     disp = ccx_node_values(d / "block.frd", "DISP", 2)
     slave = mesh.group_nodes("HAUT_BAS")
-    return dict(rc=rc, wall=wall, cpu=cpu, equations=ccx_equations(d / "ccx.log"),
+    return dict(rc=rc, wall=wall, cpu=cpu, rss_mb=LAST_RSS_MB[0], equations=ccx_equations(d / "ccx.log"),
                 **block_errors(abs(force[2]), np.array([press.get(n + 1, 0.0) for n in slave]),
                                np.array([disp.get(n + 1, 0.0) for n in slave])))
 
@@ -229,6 +263,28 @@ L_INST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, NOMBRE=1))
 CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='{FORMULATION}',{GLOBAL} ZONE=_F(GROUP_MA_MAIT='BAS_HAUT', GROUP_MA_ESCL='HAUT_BAS'{ALGO}))
 RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, CONTACT=CONT, EXCIT=_F(CHARGE=CL, FONC_MULT=RAMPE),
                      INCREMENT=_F(LIST_INST=L_INST){NEWTON})"""
+# LAC (issue 17): the cells of the upper block under its contact face HAUT_BAS cut by
+# CREA_MAILLAGE/DECOUPE_LAC (DECOUPE_HEXA='PYRA', the default: each slave QUAD4 becomes a patch of
+# four triangles around a new centre node carrying the patch's LAGS_C), mortar pairing, one
+# pressure per patch, the LAC defaults ALGO_RESO_GEOM = ALGO_RESO_CONT = 'NEWTON', CONTACT_INIT='OUI'.
+BLOCK_LAC_COMM = """DEBUT()
+M0 = LIRE_MAILLAGE(FORMAT='GMSH', UNITE=20)
+MA = CREA_MAILLAGE(MAILLAGE=M0, DECOUPE_LAC=_F(GROUP_MA_ESCL='HAUT_BAS'))
+MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(GROUP_MA=('BAS', 'HAUT'), PHENOMENE='MECANIQUE', MODELISATION='3D'))
+ACIER = DEFI_MATERIAU(ELAS=_F(E={E}, NU={NU}))
+CM = AFFE_MATERIAU(MAILLAGE=MA, AFFE=_F(TOUT='OUI', MATER=ACIER))
+CL = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=(_F(GROUP_MA='SYM_X', DX=0.0), _F(GROUP_MA='SYM_Y', DY=0.0),
+                                          _F(GROUP_MA='BAS_Z0', DZ=0.0), _F(GROUP_MA='HAUT_Z1', DZ={MD})))
+RAMPE = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0))
+L_INST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, NOMBRE=1))
+CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ALGO_RESO_GEOM='NEWTON', ALGO_RESO_CONT='NEWTON',
+                    ZONE=_F(GROUP_MA_MAIT='BAS_HAUT', GROUP_MA_ESCL='HAUT_BAS', ALGO_CONT='LAC',
+                            APPARIEMENT='MORTAR', CONTACT_INIT='OUI'))
+RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, CONTACT=CONT, EXCIT=_F(CHARGE=CL, FONC_MULT=RAMPE),
+                     INCREMENT=_F(LIST_INST=L_INST){NEWTON})
+IMPR_RESU(FORMAT='RESULTAT', RESU=_F(RESULTAT=RESU, NOM_CHAM='DEPL', GROUP_MA='HAUT_BAS'))
+FIN()
+"""
 BLOCK_LINEAR = "RESU = MECA_STATIQUE(MODELE=MO, CHAM_MATER=CM, EXCIT=_F(CHARGE=CL))"
 BLOCK_SNL = """RAMPE = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0))
 L_INST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, NOMBRE=1))
@@ -294,6 +350,26 @@ def read_resu_block(path, field):
     return rows
 
 
+def resu_component(path, field, component):
+    """The values of one component of the last `field` block of a FORMAT='RESULTAT' file, at the
+    nodes where it is defined (LAGS_C: the nodes carrying a multiplier)."""
+    lines = Path(path).read_text().splitlines()
+    start = max(i for i, l in enumerate(lines) if f"CHAMP {field} " in l)
+    i = start + 1
+    while not lines[i].split() or lines[i].split()[0] != "NOEUD":
+        i += 1
+    names = lines[i].split()[1:]
+    k = names.index(component)
+    values = []
+    for line in lines[i + 1:]:
+        parts = line.split()
+        if len(parts) != len(names) + 1:
+            break
+        if parts[1 + k] != "-":
+            values.append(float(parts[1 + k]))
+    return values
+
+
 def nodal_pressure(points, rows, slave, tributary):
     names = [f"N{n + 1}" for n in slave]
     rn = np.array([rows[n]["RN"] for n in names])
@@ -322,12 +398,20 @@ VARIANTS = {
     "gcp_elas": ("DISCRETE", ", ALGO_CONT='GCP'", None, ELASTIC_MATRIX),
     "continue": ("CONTINUE", _CONT, "", _ITER),
     "continue_pf": ("CONTINUE", _CONT, " ALGO_RESO_CONT='POINT_FIXE',", _ITER),
+    # block3d only: LAC (BLOCK_LAC_COMM) with the defaults (MUMPS, RENUM='AUTO') and with MUMPS and
+    # the SCOTCH nested-dissection ordering
+    "lac": ("CONTINUE", "", "", ""),
+    "lac_scotch": ("CONTINUE", "", "", ", SOLVEUR=_F(METHODE='MUMPS', RENUM='SCOTCH')"),
 }
+LAC_VARIANTS = ("lac", "lac_scotch")
 
 
 def stella_hertz(work, stella, algo="", newton="", variant=None):
     """variant: a key of VARIANTS (FORMULATION, the ZONE's keywords, DEFI_CONTACT's, STAT_NON_LINE's);
     without it, the discrete formulation with `algo` and `newton` as before."""
+    if variant in LAC_VARIANTS:
+        raise SystemExit(f"--variants {variant}: LAC runs block3d only (the LAC Hertz cases are "
+                         "testcases/hertz_cylinder and hertz_sphere)")
     msh = hertz_mesh(work)
     mesh = Mesh(msh)
     if variant:
@@ -369,21 +453,33 @@ def stella_block(work, stella, nb=23, nh=24, merged=None, algo="", newton="", va
     solve = {"linear": BLOCK_LINEAR, "snl": BLOCK_SNL}.get(merged) or BLOCK_CONTACT.format(
         ALGO=algo, GLOBAL=glob, NEWTON=newton, FORMULATION=form)
     fields = "'DEPL'" if merged else "('DEPL', 'CONT_NOEU')"
+    comm = BLOCK_COMM.format(E=E, NU=NU, MD=-D_BLOCK, SOLVE=solve, FIELDS=fields)
+    if variant in LAC_VARIANTS:
+        comm = BLOCK_LAC_COMM.format(E=E, NU=NU, MD=-D_BLOCK, NEWTON=newton)
     tag = f"stella_block_{nb}_{nh}{'_' + merged if merged else ''}{'_gcp' if algo else ''}{'_elas' if newton else ''}"
     if variant:
         tag = f"stella_block_{nb}_{nh}_{variant}"
     d = work / tag
-    rc, wall, cpu = stella_run(stella, d, BLOCK_COMM.format(E=E, NU=NU, MD=-D_BLOCK, SOLVE=solve, FIELDS=fields), msh)
+    rc, wall, cpu = stella_run(stella, d, comm, msh)
+    rss = LAST_RSS_MB[0]
     slave = mesh.group_nodes("HAUT_BAS")
     disp = read_resu_block(d / "case.resu", "DEPL")
     uz = np.array([disp[f"N{n + 1}"]["DZ"] for n in slave])
     solve_cpu, solve_wall = command_times(d / "case.mess")
-    out = dict(rc=rc, wall=wall, cpu=cpu, equations=3 * len(mesh.points), solve_cpu=solve_cpu,
+    out = dict(rc=rc, wall=wall, cpu=cpu, rss_mb=rss, equations=3 * len(mesh.points), solve_cpu=solve_cpu,
                solve_wall=solve_wall)
     if merged:
         out["u_err"] = float(np.max(np.abs(uz + D_BLOCK / 2))) / (D_BLOCK / 2)
         return out
     out.update(iterations(d / "case.mess"))
+    if variant in LAC_VARIANTS:
+        # one pressure per patch (LAGS_C, negative in compression) on the patch's centre node; each
+        # patch is one slave QUAD4 of side h: force = sum of -LAGS_C h^2
+        lags = np.array(resu_component(d / "case.resu", "DEPL", "LAGS_C"))
+        h = 10.0 / nh
+        out["patches"] = len(lags)
+        out.update(block_errors(float(np.sum(-lags)) * h * h, -lags, uz))
+        return out
     rows = read_resu_block(d / "case.resu", "CONT_NOEU")
     h = 10.0 / nh
     xy = mesh.points[slave][:, :2]
@@ -461,6 +557,10 @@ def main():
     ap.add_argument("--ccx-repeats", default="1", help="runs of each CalculiX point, one value or one per case "
                     "(hertz2d:3,block3d:1)")
     ap.add_argument("--work", default="/tmp/stella-ccx-bench")
+    ap.add_argument("--block", default="23,24", help="block3d: cells per side of the lower (master) and "
+                    "upper (slave) cubes")
+    ap.add_argument("--ccx-memory-gib", type=float, default=3.0, help="resident-memory limit of each CalculiX "
+                    "run (GiB; 0: none): killed above it")
     args = ap.parse_args()
     work = Path(args.work)
     work.mkdir(parents=True, exist_ok=True)
@@ -474,15 +574,19 @@ def main():
         results[name] = r
         print(name, {k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in r.items()}, flush=True)
 
+    CCX_MEMORY_GIB[0] = args.ccx_memory_gib
+    nb, nh = (int(v) for v in args.block.split(","))
+    sizes = {"hertz2d": {}, "block3d": dict(nb=nb, nh=nh)}
     for case, ccx_fn, stella_fn in (("hertz2d", ccx_hertz, stella_hertz), ("block3d", ccx_block, stella_block)):
         if case not in cases:
             continue
         if "ccx" in codes:
             for kind in kinds:
-                report(f"ccx {case} {kind}", repeated(ccx_n.get(case, 1), ccx_fn, work, kind=kind))
+                report(f"ccx {case} {kind}", repeated(ccx_n.get(case, 1), ccx_fn, work, kind=kind, **sizes[case]))
         if "stella" in codes:
             for v in variants:
-                report(f"stella {case} {v}", repeated(stella_n.get(case, 1), stella_fn, work, stella, variant=v))
+                report(f"stella {case} {v}", repeated(stella_n.get(case, 1), stella_fn, work, stella, variant=v,
+                                                      **sizes[case]))
     if "overhead" in cases:
         report("stella block 24/24 contact", stella_block(work, stella, 24, 24))
         report("stella block 24/24 contact GCP", stella_block(work, stella, 24, 24, algo=", ALGO_CONT='GCP'"))
