@@ -245,7 +245,9 @@ TEST(ContinuousContact, WhatIsNotImplementedIsRefusedNamingTheKeyword) {
   } cases[] = {
       {", FROTTEMENT='COULOMB'",
        ", COULOMB=0.2, ALGO_FROT='PENALISATION', ADAPTATION='ADAPT_COEF', GLIS_MAXI=0.1", "GLIS_MAXI"},
-      {", ALGO_RESO_GEOM='NEWTON'", "", "ALGO_RESO_GEOM='NEWTON'"},
+      {", ALGO_RESO_GEOM='NEWTON', LISSAGE='OUI'", "", "ALGO_RESO_GEOM='NEWTON' and LISSAGE='OUI'"},
+      {", FROTTEMENT='COULOMB', ALGO_RESO_GEOM='NEWTON'", ", COULOMB=0.2",
+       "ALGO_RESO_GEOM='NEWTON' and FROTTEMENT='COULOMB'"},
       {"", ", RESOLUTION='NON', TOLE_INTERP=0.1", "TOLE_INTERP (other than its default 0)"},
   };
   for (const auto& c : cases) {
