@@ -66,6 +66,10 @@ std::string ContactConstraint::effects() const {
     loop = "no geometric update (REAC_GEOM='SANS': paired once)";
     break;
   }
+  if (s.formulation == Formulation::Continue && s.continuous.geometryNewton) {
+    loop = fmt::format("geometry in the Newton iterations (ALGO_RESO_GEOM='NEWTON', RESI_GEOM={})",
+                       s.geometricResidual);
+  }
   std::size_t slaves = 0;
   for (const auto& z : definition_->zones) {
     slaves += zoneSlaveNodes(*definition_->mesh, z).size();

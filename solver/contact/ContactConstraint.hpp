@@ -90,6 +90,8 @@ protected:
   // The geometric criterion at u (what REAC_GEOM='AUTOMATIQUE' compares with RESI_GEOM and CONTROLE
   // with 1 %) for the convergence table; negative when nothing is resolved or REAC_GEOM='SANS'.
   double geometricCriterion(const Eigen::VectorXd& u) const;
+  // Pairs every zone again at u (ALGO_RESO_GEOM='NEWTON': the geometry of the current iterate).
+  void pairAgain(const Eigen::VectorXd& u) { pairAt(u); }
 
 private:
   void pairAt(const Eigen::VectorXd& u);

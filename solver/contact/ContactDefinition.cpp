@@ -143,7 +143,8 @@ ContinuousSettings readContinuousSettings(const KeywordTree& kw) {
       c.maxFrictionIterations = static_cast<int>(kw.integer("ITER_FROT_MAXI"));
     }
   }
-  // refused unless every zone is LAC (absent from trees built without the catalogue's defaults)
+  // LAC, and the nodal continuous formulation (ContinuousGeometricTangent.hpp); absent from trees built
+  // without the catalogue's defaults
   c.geometryNewton = kw.has("ALGO_RESO_GEOM") && kw.text("ALGO_RESO_GEOM") == "NEWTON";
   c.geometryAt = kw.locationOf("ALGO_RESO_GEOM");
   if (kw.real("RESI_CONT") != -1.0) {

@@ -110,7 +110,7 @@ struct ContinuousSettings {
   bool frictionFixedPoint = false;            // ALGO_RESO_FROT='POINT_FIXE' (else NEWTON)
   int maxFrictionIterations = 10;             // ITER_FROT_MAXI (POINT_FIXE)
   double frictionResidual = 1e-4;             // RESI_FROT
-  bool geometryNewton = false;                // ALGO_RESO_GEOM='NEWTON' (ALGO_CONT='LAC' only)
+  bool geometryNewton = false;                // ALGO_RESO_GEOM='NEWTON'
   SourceLocation geometryAt;                  // where ALGO_RESO_GEOM is
   std::vector<Unimplemented> refused;         // RESI_CONT, CONT_STAT_ELAS, ...
 };

@@ -195,6 +195,33 @@ void refuseAtPoints(const ContactDefinition& def, fem::Modelling modelling) {
   }
 }
 
+// ALGO_RESO_GEOM='NEWTON' has the geometric tangent of the master's own normal at the slave nodes,
+// frictionless (ContinuousGeometricTangent.hpp).
+void refuseGeometryNewton(const ContactDefinition& def) {
+  const SourceLocation& at = def.settings.continuous.geometryAt;
+  const std::string note = "use ALGO_RESO_GEOM='POINT_FIXE' (the geometric loop, REAC_GEOM)";
+  if (def.hasFriction()) {
+    notImplemented("ALGO_RESO_GEOM='NEWTON' and FROTTEMENT='COULOMB' with FORMULATION='CONTINUE'", at, note);
+  }
+  if (def.settings.smoothing) {
+    notImplemented("ALGO_RESO_GEOM='NEWTON' and LISSAGE='OUI' with FORMULATION='CONTINUE'", at, note);
+  }
+  if (contact::needsContactPoints(def)) {
+    notImplemented("ALGO_RESO_GEOM='NEWTON' and contact points that are not slave nodes (INTEGRATION "
+                   "other than 'AUTO', or 'AUTO' on TRIA6 and QUAD8 slave cells) with FORMULATION='CONTINUE'",
+                   at, note);
+  }
+  for (const auto& z : def.zones) {
+    if (z.normal != contact::NormalChoice::Master || z.masterVector != contact::VectorChoice::Auto ||
+        z.slaveVector != contact::VectorChoice::Auto || z.pairing != contact::Pairing::MasterSlave) {
+      notImplemented("ALGO_RESO_GEOM='NEWTON' and NORMALE other than 'MAIT', VECT_MAIT, VECT_ESCL or "
+                     "APPARIEMENT other than 'MAIT_ESCL' with FORMULATION='CONTINUE' (the geometric tangent "
+                     "is that of the master's own normal)",
+                     z.location, note);
+    }
+  }
+}
+
 // FORMULATION='CONTINUE': what is not implemented yet is refused, naming the keyword.
 std::unique_ptr<contact::ContactConstraint> makeContinuous(std::shared_ptr<const ContactDefinition> def,
                                                            const MechanicalSystem& system,
@@ -202,7 +229,7 @@ std::unique_ptr<contact::ContactConstraint> makeContinuous(std::shared_ptr<const
                                                            const SourceLocation& at) {
   refuse(def->settings.continuous.refused);
   if (def->settings.continuous.geometryNewton) {
-    refuse({{"ALGO_RESO_GEOM='NEWTON'", def->settings.continuous.geometryAt}});
+    refuseGeometryNewton(*def);
   }
   for (const auto& z : def->zones) {
     refuse(z.continuous.refused);

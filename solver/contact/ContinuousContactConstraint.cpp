@@ -58,8 +58,11 @@ std::string ContinuousContactConstraint::resolutionEffects() const {
     }
   }
   const auto& c = definition_->settings.continuous;
-  return fmt::format("{} (LAGS_C on the slave nodes, INTEGRATION='AUTO'), ALGO_RESO_CONT={}{}",
+  return fmt::format("{} (LAGS_C on the slave nodes, INTEGRATION='AUTO'), ALGO_RESO_CONT={}{}{}",
                      fmt::join(zones, "; "), c.statusLoop == StatusLoop::Newton ? "NEWTON" : "POINT_FIXE",
+                     c.geometryNewton ? ", ALGO_RESO_GEOM=NEWTON (pairing and geometric tangent in the "
+                                        "Newton iterations)"
+                                      : "",
                      penetrationEffects());
 }
 
@@ -208,6 +211,7 @@ void ContinuousContactConstraint::beginStep(const Eigen::VectorXd& u, double tim
   continuation_.clear();
   useInitial_ = true;
   lastStatus_.clear();
+  noteGeometry_ = 0.0; // paired at u: nothing moved yet (ALGO_RESO_GEOM='NEWTON')
   const Eigen::VectorXd g = gapsAt(u);
   status_.assign(links_.size(), 0);
   for (Eigen::Index i = 0; i < g.size(); ++i) {
@@ -237,8 +241,8 @@ void ContinuousContactConstraint::beginStep(const Eigen::VectorXd& u, double tim
 
 void ContinuousContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::VectorXd& forces,
                                             std::vector<Eigen::Triplet<double>>* tangent) {
+  pairInNewton(u);
   const Eigen::Index m = rows_.problem.A.rows();
-  noteGeometry_ = geometricCriterion(u);
   if (m == 0) {
     return;
   }
@@ -246,6 +250,12 @@ void ContinuousContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::Vec
   const Eigen::VectorXd g = gapsAt(u);
   const SparseRows& a = rows_.problem.A;
   const Eigen::MatrixXd slip = friction() ? slipsAt(u) : Eigen::MatrixXd();
+  const bool geometric = tangent != nullptr && geometryNewton();
+  std::vector<double> displacement;
+  if (geometric) {
+    displacement = nodalDisplacement(dofs_, definition_->mesh->nodeCount(), u);
+  }
+  const NodePosition position = meshPositions(*definition_->mesh, geometric ? &displacement : nullptr);
   int active = 0;
   double penetration = 0.0;
   for (Eigen::Index i = 0; i < m; ++i) {
@@ -270,6 +280,10 @@ void ContinuousContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::Vec
                                 c * p.value() * q.value());
         }
       }
+    }
+    if (geometric) { // w (lambda + rho g) d2g: the variation of the normal and of the projection
+      const double pressure = !on ? 0.0 : penalised(i) ? rho * g(i) : lagsC_[k] + rho * g(i);
+      addGeometricTangent(i, w * pressure, position, *tangent);
     }
     if (friction()) {
       addFrictionForces(i, status[k], slip.row(i).transpose(), forces, tangent);
@@ -441,6 +455,9 @@ void ContinuousContactConstraint::redundant(Eigen::Index row) const {
 bool ContinuousContactConstraint::acceptResolution(const Eigen::VectorXd& u) {
   continuation_.clear();
   const auto& c = definition_->settings.continuous;
+  if (!geometryConverged()) {
+    return false; // ALGO_RESO_GEOM='NEWTON': RESI_GEOM not met yet
+  }
   const std::vector<char> now = statusAt(u);
   const bool newton = c.statusLoop == StatusLoop::Newton;
   const std::vector<char>& used = newton ? lastStatus_ : status_;

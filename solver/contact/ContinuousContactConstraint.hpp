@@ -176,6 +176,16 @@ private:
   // max |LAGS_C| (infinite when they all vanished, 0 when nothing changed); negative before any correction.
   double frictionCriterion() const;
   bool withFrictionRows() const override { return definition_->hasFriction(); }
+  // ALGO_RESO_GEOM='NEWTON' (ContinuousGeometricTangent.cpp): the pairing follows the Newton iterates
+  // (pairInNewton pairs again at u when it moved, noting the change since the last pairing for
+  // RESI_GEOM; with POINT_FIXE it only notes the criterion), and the tangent gets the second
+  // derivative of the gap of row `row` times `coefficient` (w times the contact pressure).
+  bool geometryNewton() const;
+  void pairInNewton(const Eigen::VectorXd& u);
+  // False (continuation note set) while NEWTON's geometric criterion exceeds RESI_GEOM.
+  bool geometryConverged();
+  void addGeometricTangent(Eigen::Index row, double coefficient, const NodePosition& position,
+                           std::vector<Eigen::Triplet<double>>& tangent) const;
   // The interpenetration of the penalised zones against PENE_MAXI (ADAPT_COEF/TOUT) and the
   // INTERPENETRATION event: false when a penalty was raised (ContinuousPenetration.cpp).
   bool acceptPenetration(const Eigen::VectorXd& u);

@@ -237,6 +237,37 @@ TEST(ContinuousContact, BodyHeldOnlyByContactIsHeldOnceInContact) {
   }
 }
 
+TEST(ContinuousContact, PatchTestsWithTheGeometryInTheNewtonIterations) {
+  // ALGO_RESO_GEOM='NEWTON' (ContinuousGeometricTangent.hpp): the same closed forms as the geometric
+  // loop, in plane strain (SEG2 and SEG3 contact cells), AXIS, 3D (QUAD4) and with PENALISATION.
+  struct Case {
+    const char* name;
+    bool threeD;
+    CellType cell;
+    const char* modelling;
+    double penalty;
+  };
+  for (const Case& c :
+       {Case{"quad4", false, CellType::QUAD4, "", 0.0}, Case{"quad8", false, CellType::QUAD8, "", 0.0},
+        Case{"axis", false, CellType::QUAD4, "AXIS", 0.0}, Case{"hexa8", true, CellType::HEXA8, "", 0.0},
+        Case{"penalty", false, CellType::QUAD4, "", 1.0e6}}) {
+    Blocks b;
+    b.threeD = c.threeD;
+    b.cell = c.cell;
+    b.modelling = c.modelling;
+    b.penalty = c.penalty;
+    b.global = ", ALGO_RESO_GEOM='NEWTON'";
+    b.tests = patchChecks(b, 1e-8);
+    const StudyRun r = runStudy(fmt::format("patch_geometry_newton_{}", c.name), b.mesh(3), b.comm());
+    EXPECT_TRUE(passed(r)) << c.name;
+    EXPECT_NE(
+        r.message.find("ALGO_RESO_GEOM=NEWTON (pairing and geometric tangent in the Newton iterations)"),
+        std::string::npos)
+        << c.name;
+    EXPECT_EQ(r.message.find("2 geometric iteration(s)"), std::string::npos) << c.name; // no outer loop
+  }
+}
+
 TEST(ContinuousContact, WhatIsNotImplementedIsRefusedNamingTheKeyword) {
   const struct {
     std::string global;
@@ -245,7 +276,9 @@ TEST(ContinuousContact, WhatIsNotImplementedIsRefusedNamingTheKeyword) {
   } cases[] = {
       {", FROTTEMENT='COULOMB'",
        ", COULOMB=0.2, ALGO_FROT='PENALISATION', ADAPTATION='ADAPT_COEF', GLIS_MAXI=0.1", "GLIS_MAXI"},
-      {", ALGO_RESO_GEOM='NEWTON'", "", "ALGO_RESO_GEOM='NEWTON'"},
+      {", ALGO_RESO_GEOM='NEWTON', LISSAGE='OUI'", "", "ALGO_RESO_GEOM='NEWTON' and LISSAGE='OUI'"},
+      {", FROTTEMENT='COULOMB', ALGO_RESO_GEOM='NEWTON'", ", COULOMB=0.2",
+       "ALGO_RESO_GEOM='NEWTON' and FROTTEMENT='COULOMB'"},
       {"", ", RESOLUTION='NON', TOLE_INTERP=0.1", "TOLE_INTERP (other than its default 0)"},
   };
   for (const auto& c : cases) {
