@@ -101,3 +101,25 @@ if(NOT STELLA_PYTHON)
 endif()
 find_program(GMSH_PROGRAM gmsh)
 stella_require(GMSH_PROGRAM "Gmsh" gmsh)
+
+# PETSc (optional): SOLVEUR METHODE='PETSC' runs in the worker process `stella-petsc`
+# (tools/petsc-worker), the only program linking PETSc, MPI and the parallel MUMPS; stella keeps
+# the sequential MUMPS and no MPI. Without PETSc (or with -DSTELLA_PETSC=OFF) stella builds as
+# before and refuses METHODE='PETSC' at the keyword, naming the package (petsc-dev).
+option(STELLA_PETSC "Build the PETSc worker of SOLVEUR METHODE='PETSC' when PETSc is found" ON)
+set(STELLA_HAVE_PETSC FALSE)
+if(STELLA_PETSC)
+  find_package(PkgConfig QUIET)
+  if(PkgConfig_FOUND)
+    pkg_check_modules(PETSC QUIET IMPORTED_TARGET PETSc)
+  endif()
+  find_package(MPI QUIET COMPONENTS C)
+  find_library(MUMPS_PARALLEL_S_LIBRARY NAMES smumps NAMES_PER_DIR)
+  find_library(MUMPS_PARALLEL_COMMON_LIBRARY NAMES mumps_common NAMES_PER_DIR)
+  if(PETSC_FOUND AND MPI_C_FOUND AND MUMPS_PARALLEL_S_LIBRARY AND MUMPS_PARALLEL_COMMON_LIBRARY)
+    set(STELLA_HAVE_PETSC TRUE)
+    message(STATUS "PETSc ${PETSC_VERSION}: SOLVEUR METHODE='PETSC' through bin/stella-petsc")
+  else()
+    message(STATUS "PETSc, MPI or the parallel MUMPS not found: METHODE='PETSC' refused (install petsc-dev)")
+  endif()
+endif()

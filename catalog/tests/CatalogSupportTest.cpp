@@ -100,5 +100,26 @@ TEST(CatalogSupport, DynaNonLineIsMarkedNotImplemented) {
   EXPECT_FALSE(Catalog::builtin().find("STAT_NON_LINE")->notImplemented.has_value());
 }
 
+// SOLVEUR METHODE='PETSC': what PETSc does not give stella yet is refused at the value (HPDDM,
+// GMRES_LMP, a RENUM other than SANS for LDLT_SP), what it gives passes.
+TEST(CatalogSupport, PetscPreconditionersNotImplementedAreRefused) {
+  for (const char* refused : {"PRE_COND='HPDDM'", "PRE_COND='LDLT_DP'", "PRE_COND='FIELDSPLIT'",
+                              "ALGORITHME='GMRES_LMP', PRE_COND='GAMG'", "ALGORITHME='CR', PRE_COND='JACOBI'",
+                              "PRE_COND='LDLT_SP', RENUM='PARMETIS'", "PRE_COND='JACOBI', RENUM='RCMK'",
+                              "PRE_COND='GAMG', MATR_DISTRIBUEE='OUI'"}) {
+    auto ds = refusals(std::string("SOLVEUR=_F(METHODE='PETSC', ") + refused + "))");
+    ASSERT_FALSE(ds.empty()) << refused;
+    EXPECT_EQ(ds.front().id, "CATALOG_17") << refused;
+    EXPECT_NE(ds.front().message.find("not implemented yet"), std::string::npos) << ds.front().message;
+    EXPECT_EQ(ds.front().location.line, kSecondLine) << refused;
+  }
+  for (const char* accepted :
+       {"PRE_COND='GAMG', ALGORITHME='CG'", "PRE_COND='BOOMER'", "PRE_COND='ML'",
+        "PRE_COND='LDLT_SP', REAC_PRECOND=10", "PRE_COND='LDLT_INC', NIVE_REMPLISSAGE=1",
+        "PRE_COND='SOR', ALGORITHME='GMRES'", "PRE_COND='JACOBI', NMAX_ITER=50"}) {
+    EXPECT_TRUE(refusals(std::string("SOLVEUR=_F(METHODE='PETSC', ") + accepted + "))").empty()) << accepted;
+  }
+}
+
 } // namespace
 } // namespace stella

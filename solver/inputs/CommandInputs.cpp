@@ -78,11 +78,21 @@ linalg::SolverOptions readSolverOptions(const KeywordTree& keywords) {
   const KeywordTree& s = keywords.occurrences("SOLVEUR").front();
   const std::string method = s.textOr("METHODE", "MUMPS");
   auto m = linalg::solverMethodFromName(method);
-  if (!m || *m == linalg::SolverMethod::Petsc) {
-    throw UserError(Diagnostic::fatal("SOLVE_5",
-                                      fmt::format("SOLVEUR METHODE='{}' is not implemented yet", method),
-                                      s.locationOf("METHODE"))
-                        .withNote("use METHODE='MUMPS' (the default), 'MULT_FRONT', 'LDLT' or 'GCPC'"));
+  if (!m) {
+    throw UserError(
+        Diagnostic::fatal("SOLVE_5", fmt::format("SOLVEUR METHODE='{}' is not implemented yet", method),
+                          s.locationOf("METHODE"))
+            .withNote("use METHODE='MUMPS' (the default), 'MULT_FRONT', 'LDLT', 'GCPC' or 'PETSC'"));
+  }
+  if (*m == linalg::SolverMethod::Petsc && !linalg::petscAvailable()) {
+    // RUN_8, an id about the machine: the study is valid, this build lacks the PETSc worker
+    throw UserError(
+        Diagnostic::fatal("RUN_8",
+                          "SOLVEUR METHODE='PETSC' is not available: this stella was "
+                          "built without PETSc",
+                          s.locationOf("METHODE"))
+            .withNote("install the Debian package petsc-dev (tools/install-deps) and rebuild, or use "
+                      "METHODE='MUMPS' or 'GCPC'"));
   }
   o.method = *m;
   o.renumbering = s.textOr("RENUM", o.renumbering);
@@ -95,8 +105,20 @@ linalg::SolverOptions readSolverOptions(const KeywordTree& keywords) {
   if (s.has("NMAX_ITER")) {
     o.maxIterations = static_cast<int>(s.integer("NMAX_ITER"));
   }
-  if (s.has("PRE_COND")) { // GCPC
+  if (s.has("PRE_COND")) { // GCPC, PETSC
     o.preconditioner = s.text("PRE_COND");
+  }
+  if (s.has("ALGORITHME")) { // PETSC
+    o.algorithm = s.text("ALGORITHME");
+  }
+  if (*m == linalg::SolverMethod::Petsc) {
+    if (s.has("OPTION_PETSC")) {
+      o.petscOptions = s.text("OPTION_PETSC");
+    }
+    if (s.has("NIVE_REMPLISSAGE")) { // LDLT_INC
+      o.fillLevel = static_cast<int>(s.integer("NIVE_REMPLISSAGE"));
+      o.fill = s.real("REMPLISSAGE");
+    }
   }
   if (s.has("REAC_PRECOND")) { // GCPC, LDLT_SP
     o.preconditionerReuseIterations = static_cast<int>(s.integer("REAC_PRECOND"));

@@ -25,6 +25,31 @@ std::optional<SolverMethod> solverMethodFromName(std::string_view name) {
   return std::nullopt;
 }
 
+namespace {
+
+std::unique_ptr<LinearSolver> makePetscFor(const SolverOptions& options, MatrixKind kind) {
+  if (!petscAvailable()) {
+    throw LinearSolverError(
+        "METHODE='PETSC': this stella was built without PETSc (install petsc-dev, rebuild)");
+  }
+  if (kind == MatrixKind::SymmetricIndefinite) {
+    throw LinearSolverError(
+        "METHODE='PETSC' on a matrix with Lagrange multipliers (dualised relations) is not "
+        "implemented yet: eliminate the conditions (AFFE_CHAR_CINE, or single-DOF DDL_IMPO, "
+        "eliminated) or use MUMPS");
+  }
+  if (kind == MatrixKind::Unsymmetric && (options.algorithm == "CG" || options.preconditioner == "LDLT_SP" ||
+                                          options.preconditioner == "LDLT_INC")) {
+    throw LinearSolverError(
+        "METHODE='PETSC' with ALGORITHME='" + options.algorithm + "', PRE_COND='" + options.preconditioner +
+        "' needs a symmetric matrix: this tangent is unsymmetric (use GMRES, FGMRES or GCR "
+        "with GAMG, BOOMER, ML, SOR or JACOBI)");
+  }
+  return detail::makePetsc(options, kind);
+}
+
+} // namespace
+
 std::unique_ptr<LinearSolver> makeLinearSolver(const SolverOptions& options, MatrixKind kind) {
   switch (options.method) {
   case SolverMethod::Mumps:
@@ -45,9 +70,9 @@ std::unique_ptr<LinearSolver> makeLinearSolver(const SolverOptions& options, Mat
     }
     return detail::makeConjugateGradient(options);
   case SolverMethod::Petsc:
-    break;
+    return makePetscFor(options, kind);
   }
-  throw LinearSolverError("METHODE='PETSC' is not implemented yet");
+  throw LinearSolverError("unknown SOLVEUR METHODE");
 }
 
 namespace detail {

@@ -14,6 +14,10 @@
 //   GCPC        conjugate gradient, symmetric positive definite only (constraints must be
 //               eliminated, AFFE_CHAR_CINE): PRE_COND='LDLT_INC' Eigen's with an incomplete
 //               Cholesky; 'LDLT_SP' preconditioned by a single-precision MUMPS factorisation.
+//   PETSC       a PETSc Krylov solver (ALGORITHME) and preconditioner (PRE_COND: GAMG, BOOMER,
+//               ML, LDLT_SP, LDLT_INC, SOR, JACOBI, SANS) in the worker process `stella-petsc`
+//               (PetscSolver.cpp); symmetric positive definite, or unsymmetric with GMRES,
+//               FGMRES or GCR; the multigrids get the rigid-body modes (setNodeCoordinates).
 // A singular matrix raises SingularMatrixError with the equation number of the null pivot.
 
 #include "solver/linalg/SparseMatrix.hpp"
@@ -24,6 +28,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace stella::linalg {
 
@@ -42,7 +47,14 @@ struct SolverOptions {
   int maxIterations = 0;                   // NMAX_ITER (GCPC); 0: the system size
   std::string preconditioner = "LDLT_INC"; // PRE_COND (GCPC): LDLT_INC or LDLT_SP
   int preconditionerReuseIterations = 30;  // REAC_PRECOND (LDLT_SP): rebuilt after a solve needing more
+  std::string algorithm = "FGMRES";        // ALGORITHME (PETSC): CG, GMRES, GCR, FGMRES
+  int fillLevel = 0;                       // NIVE_REMPLISSAGE (PETSC, LDLT_INC)
+  double fill = 1.0;                       // REMPLISSAGE (PETSC, LDLT_INC)
+  std::string petscOptions;                // OPTION_PETSC: PETSc options database string
 };
+
+// Whether this build has the PETSc worker (METHODE='PETSC'); false: refused at the keyword.
+bool petscAvailable();
 
 // The matrix is singular: `equation` is the null pivot's equation (-1 if the backend could not
 // tell), to be named as node and DOF through the DofNumbering.
@@ -89,6 +101,19 @@ public:
   virtual double factorisationFlops() const = 0;
   // The fill-reducing ordering the last analysis used, named as RENUM names it (AMD, METIS...).
   virtual std::string orderingUsed() const = 0;
+  // Node coordinates for the near-null space of the multigrid preconditioners (PETSC: GAMG, ML,
+  // BOOMER get the rigid-body modes, 3 in 2D, 6 in 3D): `dimension` consecutive equations per
+  // node, coordinates[e] the node's coordinate along equation e's component, for the physical
+  // equations of a matrix without multiplier rows. The direct solvers have no use for them.
+  virtual void setNodeCoordinates(int dimension, std::vector<double> coordinates) {
+    (void)dimension;
+    (void)coordinates;
+  }
+  // Iterations of the last solve (the largest over its right-hand sides); 0 for direct solvers.
+  virtual int lastIterations() const { return 0; }
+  // Peak resident memory (MB) of a process the backend runs in (PETSC's worker), 0 if none: the
+  // job's own peak memory does not include it.
+  virtual double workerPeakMegabytes() const { return 0.0; }
 
 protected:
   explicit LinearSolver(MatrixKind k) : kind_(k) {}
@@ -103,8 +128,8 @@ inline Storage storageFor(MatrixKind k) {
   return k == MatrixKind::Unsymmetric ? Storage::Full : Storage::Upper;
 }
 
-// Throws LinearSolverError for combinations not available (PETSC; GCPC on indefinite or
-// unsymmetric matrices).
+// Throws LinearSolverError for combinations not available (GCPC on indefinite or unsymmetric
+// matrices, PETSC on indefinite ones or without the worker).
 std::unique_ptr<LinearSolver> makeLinearSolver(const SolverOptions& options, MatrixKind kind);
 
 } // namespace stella::linalg

@@ -288,6 +288,20 @@ void SaddleSolver::factorize(const Eigen::SparseMatrix<double>& k, bool checkSin
   factorize(matrix, symmetric);
 }
 
+// Per physical equation, its node's coordinate along the equation's component (the near-null
+// space of METHODE='PETSC''s multigrids).
+std::vector<double> SaddleSolver::equationCoordinates() const {
+  const int n = dofs_.physicalCount();
+  const int d = dofs_.components();
+  std::vector<double> out(static_cast<std::size_t>(n));
+  const std::vector<double>& xyz = mesh_.coordinates();
+  for (int e = 0; e < n; ++e) {
+    out[static_cast<std::size_t>(e)] =
+        xyz[3 * static_cast<std::size_t>(dofs_.node(e)) + static_cast<std::size_t>(e % d)];
+  }
+  return out;
+}
+
 void SaddleSolver::factorize(const StiffnessMatrix& k, bool symmetric) {
   const auto start = Clock::now();
   prepareRelations();
@@ -306,6 +320,9 @@ void SaddleSolver::factorize(const StiffnessMatrix& k, bool symmetric) {
   try {
     if (!solver_ || solver_->kind() != kind) {
       solver_ = linalg::makeLinearSolver(options_, kind);
+      if (options_.method == linalg::SolverMethod::Petsc) {
+        solver_->setNodeCoordinates(dofs_.components(), equationCoordinates());
+      }
       analysed_.reset();
       factorisedValues_.clear();
     }

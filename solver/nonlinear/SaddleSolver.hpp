@@ -56,6 +56,10 @@ public:
   const linalg::SolverOptions& options() const { return options_; }
   // "MUMPS" etc., after the first factorisation.
   std::string backendName() const;
+  // Iterations of the last solve of an iterative backend (PETSC), 0 for direct ones.
+  int lastIterations() const { return solver_ ? solver_->lastIterations() : 0; }
+  // Peak memory (MB) of the backend's worker process (PETSC), 0 if none.
+  double workerPeakMegabytes() const { return solver_ ? solver_->workerPeakMegabytes() : 0.0; }
 
   // Factorises for the tangent K (physical block, assembled in place; `symmetric` chooses the
   // storage and K must then be stored upper or full, else full). Throws UserError SOLVE_1
@@ -121,6 +125,7 @@ private:
   // non-finite solution.
   void solveBordered(Eigen::Ref<Eigen::MatrixXd> x);
   void checkSingularity(const Eigen::SparseMatrix<double>& k) const;
+  std::vector<double> equationCoordinates() const;
   // Chooses the single-DOF relations to eliminate (condensed_, removed_, keptRows_); then per
   // physical DOF, the (kept relation, coefficient) of the kept relations holding it (free DOFs
   // only); per kept relation, its (DOF, coefficient) terms on free DOFs, sorted and merged.

@@ -86,6 +86,11 @@ Value runMecaStatique(OperatorCall& call) {
                          system.solver().backendName(),
                          bordered > 0 ? "symmetric indefinite" : "symmetric positive definite",
                          system.dofs().lagrangeCount() - bordered, bordered);
+      if (system.solver().lastIterations() > 0) {
+        msg << fmt::format("   iterative solver: {} iteration(s) for the first solve; peak memory of the "
+                           "solver's process: {:.0f} MB\n",
+                           system.solver().lastIterations(), system.solver().workerPeakMegabytes());
+      }
       first = false;
     }
     PhaseClock clock(system.phases().post);

@@ -284,6 +284,11 @@ Value runStatNonLine(OperatorCall& call) {
                      reused > 0 ? fmt::format(" (the factors kept {} time(s): unchanged matrix)", reused)
                                 : "",
                      run.computedSteps, run.cuts);
+  if (system.solver().workerPeakMegabytes() > 0.0) {
+    msg << fmt::format("   iterative solver: {} iteration(s) in the last solve; peak memory of the solver's "
+                       "process: {:.0f} MB\n",
+                       system.solver().lastIterations(), system.solver().workerPeakMegabytes());
+  }
   {
     PhaseTimes phases = system.phaseTimes();
     const double elapsed =

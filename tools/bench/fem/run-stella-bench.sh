@@ -7,7 +7,8 @@
 #
 #   run-stella-bench.sh STELLA CASE N METHODE WORKDIR
 #     CASE     hexa8 | tetra10 | quad4 | quad8 (see make-box-mesh.py)
-#     METHODE  MUMPS | MULT_FRONT | LDLT
+#     METHODE  MUMPS | MULT_FRONT | LDLT | GCPC | PETSC_GAMG | PETSC_BOOMER (PETSC: ALGORITHME='CG',
+#              PRE_COND='GAMG' or 'BOOMER', RESI_RELA=1e-8; iterations= in the output line)
 set -euo pipefail
 stella=$1
 case_name=$2
@@ -21,6 +22,10 @@ if [[ ! -s $mesh ]]; then
   /usr/bin/python3 "$here/make-box-mesh.py" "$case_name" "$n" "$mesh"
 fi
 study="$work/${case_name}_${n}_${method}"
+case $method in
+  PETSC_GAMG | PETSC_BOOMER) solveur="METHODE='PETSC', ALGORITHME='CG', PRE_COND='${method#PETSC_}', RESI_RELA=1.0e-8" ;;
+  *) solveur="METHODE='$method'" ;;
+esac
 case $case_name in
   hexa8 | tetra10)
     modelling=3D
@@ -42,7 +47,7 @@ CM = AFFE_MATERIAU(MAILLAGE=M, AFFE=_F(TOUT='OUI', MATER=ACIER))
 BLOC = AFFE_CHAR_CINE(MODELE=MO, MECA_IMPO=_F(GROUP_MA='XMIN', $fixed))
 CHARGE = AFFE_CHAR_MECA(MODELE=MO, $load)
 RESU = MECA_STATIQUE(MODELE=MO, CHAM_MATER=CM, EXCIT=(_F(CHARGE=BLOC), _F(CHARGE=CHARGE)),
-                     SOLVEUR=_F(METHODE='$method'))
+                     SOLVEUR=_F($solveur))
 FIN()
 EOF
 cat > "$study.export" << EOF
@@ -65,7 +70,8 @@ wall=$(grep "Elapsed (wall clock)" "$study.time" | awk '{print $NF}')
 rss=$(grep "Maximum resident set size" "$study.time" | awk '{print $NF}')
 cpu=$(awk -F': ' '/User time|System time/ {s += $2} END {printf "%.1f", s}' "$study.time")
 maxu=$(grep -m1 "max |u|" "$mess" | sed -E 's/.*max \|u\| = ([-0-9.e+]+).*/\1/')
+iterations=$(grep -m1 "iterative solver:" "$mess" | sed -E 's/.*iterative solver: ([0-9]+) .*/\1/' || true)
 echo "case=$case_name n=$n solver=$method backend=$backend dofs=$dofs numbering=$(num numbering)" \
   "assembly=$(num assembly) factorisation=$(num factorisation) solve=$(num solve) post=$(num post)" \
   "total=$(num total) peak_mb=$peak meca_statique=$mecaTime lire_maillage=$readTime job_wall=$wall" \
-  "max_rss_kb=$rss cpu_s=$cpu max_u=$maxu"
+  "max_rss_kb=$rss cpu_s=$cpu max_u=$maxu iterations=${iterations:-0}"
