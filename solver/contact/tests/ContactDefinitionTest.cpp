@@ -2,7 +2,9 @@
 // checks (unknown group, shared master/slave nodes, overlapping slave surfaces, inward normals).
 
 #include "solver/contact/ContactDefinition.hpp"
+#include "catalog/KeywordTree.hpp"
 #include "solver/contact/tests/ContactTestMeshes.hpp"
+#include "solver/inputs/ContactReader.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 #include "solver/mesh/MeshTransform.hpp"
 
