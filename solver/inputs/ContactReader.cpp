@@ -51,8 +51,8 @@ ContactAlgorithm algorithmFromName(const std::string& s) {
 // A keyword whose value is not implemented yet is recorded with its location.
 void refuseUnless(const KeywordTree& kw, const std::string& name, const std::string& allowed,
                   std::vector<Unimplemented>& refused) {
-  if (kw.has(name) && kw.textOr(name, allowed) != allowed) {
-    refused.push_back({fmt::format("{}='{}'", name, kw.textOr(name, allowed)), kw.locationOf(name)});
+  if (kw.has(name) && kw.text(name) != allowed) {
+    refused.push_back({fmt::format("{}='{}'", name, kw.text(name)), kw.locationOf(name)});
   }
 }
 
@@ -155,87 +155,129 @@ ContinuousSettings readContinuousSettings(const KeywordTree& kw) {
   return c;
 }
 
+// The pairing and resolution keywords of a ZONE of FORMULATION='DISCRETE', or 'CONTINUE' with
+// ALGO_CONT='STANDARD' or 'PENALISATION' (a LAC zone has APPARIEMENT only).
+void readZonePairing(const KeywordTree& z, Formulation formulation, ContactZone& zone) {
+  const std::string normal = z.text("NORMALE");
+  zone.normal = normal == "ESCL"        ? NormalChoice::Slave
+                : normal == "MAIT_ESCL" ? NormalChoice::MasterSlave
+                                        : NormalChoice::Master;
+  zone.masterVector = vectorChoice(z.text("VECT_MAIT"));
+  zone.masterVectorValue =
+      zone.masterVector == VectorChoice::Fixed ? vector3(z, "MAIT_FIXE") : vector3(z, "MAIT_VECT_Y");
+  zone.slaveVector = vectorChoice(z.text("VECT_ESCL"));
+  zone.slaveVectorValue =
+      zone.slaveVector == VectorChoice::Fixed ? vector3(z, "ESCL_FIXE") : vector3(z, "ESCL_VECT_Y");
+  zone.projection = z.text("TYPE_PROJECTION") == "FIXE" ? Projection::Fixed : Projection::Orthogonal;
+  zone.projectionDirection = vector3(z, "DIRE_APPA");
+  zone.pairingDistance = z.real("DIST_APPA");
+  zone.extensionTolerance = z.real("TOLE_PROJ_EXT");
+  zone.resolve = z.text("RESOLUTION") == "OUI";
+  if (!zone.resolve) { // TOLE_INTERP: RESOLUTION='NON' only
+    zone.interpolationTolerance = z.real("TOLE_INTERP");
+  }
+  // GLISSIERE: ALGO_CONT='CONTRAINTE' in the discrete formulation, every zone of this function in
+  // the continuous one; ALARME_JEU: GLISSIERE='OUI' of the discrete formulation.
+  if (formulation == Formulation::Continue || zone.algorithm == ContactAlgorithm::Constraint) {
+    zone.slide = z.text("GLISSIERE") == "OUI";
+  }
+  if (formulation == Formulation::Discrete && zone.slide) {
+    zone.gapAlarm = z.real("ALARME_JEU");
+  }
+}
+
 ContactZone readZone(const KeywordTree& z, Formulation formulation, bool friction) {
   ContactZone zone;
   zone.location = z.location();
   zone.masterGroup = z.textOr("GROUP_MA_MAIT", "");
   zone.slaveGroup = z.textOr("GROUP_MA_ESCL", "");
-  const std::string pairing = z.textOr("APPARIEMENT", "MAIT_ESCL");
-  zone.pairing = pairing == "NODAL"    ? Pairing::Nodal
-                 : pairing == "MORTAR" ? Pairing::Mortar
-                                       : Pairing::MasterSlave;
-  const std::string normal = z.textOr("NORMALE", "MAIT");
-  zone.normal = normal == "ESCL"        ? NormalChoice::Slave
-                : normal == "MAIT_ESCL" ? NormalChoice::MasterSlave
-                                        : NormalChoice::Master;
-  zone.masterVector = vectorChoice(z.textOr("VECT_MAIT", "AUTO"));
-  zone.masterVectorValue =
-      zone.masterVector == VectorChoice::Fixed ? vector3(z, "MAIT_FIXE") : vector3(z, "MAIT_VECT_Y");
-  zone.slaveVector = vectorChoice(z.textOr("VECT_ESCL", "AUTO"));
-  zone.slaveVectorValue =
-      zone.slaveVector == VectorChoice::Fixed ? vector3(z, "ESCL_FIXE") : vector3(z, "ESCL_VECT_Y");
-  zone.projection =
-      z.textOr("TYPE_PROJECTION", "ORTHOGONALE") == "FIXE" ? Projection::Fixed : Projection::Orthogonal;
-  zone.projectionDirection = vector3(z, "DIRE_APPA");
-  zone.pairingDistance = z.realOr("DIST_APPA", -1.0);
-  zone.extensionTolerance = z.realOr("TOLE_PROJ_EXT", 0.5);
+  zone.algorithm = algorithmFromName(z.text("ALGO_CONT"));
+  if (formulation == Formulation::Continue && zone.algorithm == ContactAlgorithm::Penalty) {
+    zone.algorithm = ContactAlgorithm::ContinuePenalty;
+  }
+  if (formulation != Formulation::LiaisonUnil) {
+    const std::string pairing = z.text("APPARIEMENT"); // MORTAR by default with ALGO_CONT='LAC'
+    zone.pairing = pairing == "NODAL"    ? Pairing::Nodal
+                   : pairing == "MORTAR" ? Pairing::Mortar
+                                         : Pairing::MasterSlave;
+    if (zone.algorithm != ContactAlgorithm::Lac) {
+      readZonePairing(z, formulation, zone);
+    }
+  }
   if (z.has("SANS_GROUP_NO")) {
     zone.excludedNodeGroups = z.texts("SANS_GROUP_NO");
   }
   if (z.has("SANS_GROUP_MA")) {
     zone.excludedCellGroups = z.texts("SANS_GROUP_MA");
   }
-  zone.resolve = z.textOr("RESOLUTION", "OUI") == "OUI";
-  zone.interpolationTolerance = z.realOr("TOLE_INTERP", 0.0);
-  const std::string defaultAlgorithm = formulation == Formulation::Continue ? "STANDARD" : "CONTRAINTE";
-  zone.algorithm = algorithmFromName(z.textOr("ALGO_CONT", defaultAlgorithm));
-  if (formulation == Formulation::Continue && zone.algorithm == ContactAlgorithm::Penalty) {
-    zone.algorithm = ContactAlgorithm::ContinuePenalty;
-  }
-  zone.slide = z.textOr("GLISSIERE", "NON") == "OUI";
-  zone.gapAlarm = z.realOr("ALARME_JEU", 0.0);
   zone.normalPenalty = z.realOr("E_N", 0.0);
   zone.friction = friction;
   zone.coulomb = z.realOr("COULOMB", 0.0);
   zone.tangentPenalty = z.realOr("E_T", 0.0);
-  zone.frictionMatrixCoefficient = z.realOr("COEF_MATR_FROT", 0.0);
+  if (formulation == Formulation::Discrete && friction) {
+    zone.frictionMatrixCoefficient = z.real("COEF_MATR_FROT");
+  }
   if (formulation == Formulation::Continue) {
     zone.continuous = readContinuousZone(z);
   }
   return zone;
 }
 
-ContactSettings readSettings(const KeywordTree& kw) {
-  ContactSettings s;
-  const std::string formulation = kw.textOr("FORMULATION", "DISCRETE");
-  s.formulation = formulation == "CONTINUE"       ? Formulation::Continue
-                  : formulation == "LIAISON_UNIL" ? Formulation::LiaisonUnil
-                                                  : Formulation::Discrete;
-  s.friction = kw.textOr("FROTTEMENT", "SANS") == "COULOMB";
-  s.frictionAt = kw.locationOf("FROTTEMENT");
-  s.stopInterpenetration = kw.textOr("STOP_INTERP", "NON") == "OUI";
-  s.smoothing = kw.textOr("LISSAGE", "NON") == "OUI";
-  s.checkNormals = kw.textOr("VERI_NORM", "OUI") == "OUI";
-  const std::string reac = kw.textOr("REAC_GEOM", "AUTOMATIQUE");
+// REAC_GEOM and its block: FORMULATION='DISCRETE', or 'CONTINUE' with ALGO_RESO_GEOM='POINT_FIXE'.
+void readGeometricLoop(const KeywordTree& kw, ContactSettings& s) {
+  const std::string reac = kw.text("REAC_GEOM");
   s.geometricUpdate = reac == "SANS"       ? GeometricUpdate::None
                       : reac == "CONTROLE" ? GeometricUpdate::Controlled
                                            : GeometricUpdate::Automatic;
-  s.maxGeometricIterations = static_cast<int>(kw.integerOr("ITER_GEOM_MAXI", 10));
-  s.geometricResidual = kw.realOr("RESI_GEOM", 0.01);
-  s.geometricIterations = static_cast<int>(kw.integerOr("NB_ITER_GEOM", 2));
-  s.contactIterationFactor = static_cast<int>(kw.integerOr("ITER_CONT_MULT", 4));
-  s.stopIfSingular = kw.textOr("STOP_SINGULIER", "OUI") == "OUI";
-  s.rightHandSidesPerSolve = static_cast<int>(kw.integerOr("NB_RESOL", 10));
+  if (s.geometricUpdate == GeometricUpdate::Automatic) {
+    s.maxGeometricIterations = static_cast<int>(kw.integer("ITER_GEOM_MAXI"));
+    s.geometricResidual = kw.real("RESI_GEOM");
+  } else if (s.geometricUpdate == GeometricUpdate::Controlled) {
+    s.geometricIterations = static_cast<int>(kw.integer("NB_ITER_GEOM"));
+  }
+}
+
+// The global keywords of FORMULATION='DISCRETE'.
+void readDiscreteSettings(const KeywordTree& kw, ContactSettings& s) {
+  readGeometricLoop(kw, s);
+  s.contactIterationFactor = static_cast<int>(kw.integer("ITER_CONT_MULT"));
+  s.stopIfSingular = kw.text("STOP_SINGULIER") == "OUI";
+  s.rightHandSidesPerSolve = static_cast<int>(kw.integer("NB_RESOL"));
   if (kw.has("RESI_ABSO")) {
     s.gcpTolerance = kw.real("RESI_ABSO");
   }
-  s.gcpMaxIterations = static_cast<int>(kw.integerOr("ITER_GCP_MAXI", 0));
-  s.lineSearch = kw.textOr("RECH_LINEAIRE", "ADMISSIBLE") == "NON_ADMISSIBLE" ? LineSearch::NonAdmissible
-                                                                              : LineSearch::Admissible;
-  s.dirichletPreconditioner = kw.textOr("PRE_COND", "SANS") == "DIRICHLET";
-  s.preconditionerResidual = kw.realOr("COEF_RESI", -1.0);
-  s.preconditionerMaxIterations = static_cast<int>(kw.integerOr("ITER_PRE_MAXI", 0));
-  if (s.formulation == Formulation::Continue) {
+  s.gcpMaxIterations = static_cast<int>(kw.integer("ITER_GCP_MAXI"));
+  s.lineSearch =
+      kw.text("RECH_LINEAIRE") == "NON_ADMISSIBLE" ? LineSearch::NonAdmissible : LineSearch::Admissible;
+  s.dirichletPreconditioner = kw.text("PRE_COND") == "DIRICHLET";
+  if (s.dirichletPreconditioner) {
+    s.preconditionerResidual = kw.real("COEF_RESI");
+    s.preconditionerMaxIterations = static_cast<int>(kw.integer("ITER_PRE_MAXI"));
+  }
+}
+
+ContactSettings readSettings(const KeywordTree& kw) {
+  ContactSettings s;
+  const std::string formulation = kw.text("FORMULATION");
+  s.formulation = formulation == "CONTINUE"       ? Formulation::Continue
+                  : formulation == "LIAISON_UNIL" ? Formulation::LiaisonUnil
+                                                  : Formulation::Discrete;
+  s.friction = kw.text("FROTTEMENT") == "COULOMB";
+  s.frictionAt = kw.locationOf("FROTTEMENT");
+  if (s.formulation == Formulation::LiaisonUnil) {
+    return s; // none of the keywords below
+  }
+  s.stopInterpenetration = kw.text("STOP_INTERP") == "OUI";
+  s.smoothing = kw.text("LISSAGE") == "OUI";
+  s.checkNormals = kw.text("VERI_NORM") == "OUI";
+  if (s.formulation == Formulation::Discrete) {
+    readDiscreteSettings(kw, s);
+  } else {
+    if (kw.text("ALGO_RESO_GEOM") == "POINT_FIXE") {
+      readGeometricLoop(kw, s);
+    } else { // NEWTON
+      s.geometricResidual = kw.real("RESI_GEOM");
+    }
     s.continuous = readContinuousSettings(kw);
   }
   return s;

@@ -64,7 +64,7 @@ bool keepByComparison(const std::string& crit, std::optional<int> c) {
 
 std::vector<std::size_t> applyFilter(const Table::Column& col, const std::vector<std::size_t>& rows,
                                      const KeywordTree& f) {
-  const std::string crit = f.textOr("CRIT_COMP", "EQ");
+  const std::string crit = f.text("CRIT_COMP");
   std::vector<std::size_t> kept;
   if (crit == "VIDE" || crit == "NON_VIDE") {
     for (std::size_t r : rows) {

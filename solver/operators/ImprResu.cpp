@@ -38,8 +38,8 @@ std::vector<int> selectedSteps(const Result& r, const KeywordTree& occ) {
     }
   }
   if (occ.has("INST")) {
-    const bool absolute = occ.textOr("CRITERE", "RELATIF") == "ABSOLU";
-    const double precision = occ.realOr("PRECISION", 1e-6);
+    const bool absolute = occ.text("CRITERE") == "ABSOLU";
+    const double precision = occ.real("PRECISION");
     for (const double t : occ.reals("INST")) {
       const ResultStep* s = r.stepAtTime(t, precision, absolute);
       if (s == nullptr) {
