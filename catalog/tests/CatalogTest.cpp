@@ -316,7 +316,10 @@ TEST(Commands, DefaultsOfSeveralCommands) {
   ASSERT_TRUE(valid(*t));
   const KeywordTree& resu = t->last().keywords.occurrences("RESU")[0];
   EXPECT_DOUBLE_EQ(resu.real("PRECISION"), 1e-3);
-  EXPECT_FALSE(resu.has("TOLE_MACHINE")); // no default in RESU
+  // RESU's TOLE_MACHINE and CRITERE (max=2 in code_aster, whose code fills 1e-6 and RELATIF when
+  // absent) take their defaults from the catalogue, as everywhere else (issue 15).
+  EXPECT_DOUBLE_EQ(resu.real("TOLE_MACHINE"), 1e-6);
+  EXPECT_EQ(resu.text("CRITERE"), "RELATIF");
   EXPECT_EQ(resu.text("VALE_ABS"), "NON");
 }
 

@@ -1,10 +1,10 @@
 #pragma once
 // The data of a `char_contact` concept (DEFI_CONTACT): the formulation, the global settings of
 // the geometric loop and of the discrete algorithms, and the contact zones with their pairing
-// and resolution settings, as read from the validated keyword tree. The definition keeps every
-// formulation the catalogue accepts (DISCRETE, CONTINUE, LAC); STAT_NON_LINE refuses the ones not
-// implemented yet. Checks against the mesh (groups, shared nodes, disjoint slave surfaces,
-// outward normals) run when the definition is built (checkContactDefinition).
+// and resolution settings, as read from the validated keyword tree (solver/inputs/ContactReader).
+// The definition keeps every formulation the catalogue accepts (DISCRETE, CONTINUE, LAC);
+// STAT_NON_LINE refuses the ones not implemented yet. Checks against the mesh (groups, shared nodes, disjoint
+// slave surfaces, outward normals) run when the definition is built (checkContactDefinition).
 
 #include "interpreter/Diagnostics.hpp"
 #include "interpreter/Value.hpp"
@@ -19,7 +19,6 @@
 
 namespace stella {
 
-class KeywordTree;
 class Model;
 
 namespace contact {
@@ -151,11 +150,6 @@ public:
   // Whether any zone resolves contact (RESOLUTION='OUI').
   bool resolvesAny() const;
 };
-
-// Reads the keyword tree of DEFI_CONTACT (validated by the catalogue). `mesh` is the model's
-// mesh. Throws UserError for what the catalogue cannot check (groups, geometry).
-std::shared_ptr<ContactDefinition> readContactDefinition(const KeywordTree& keywords,
-                                                         std::shared_ptr<const Mesh> mesh);
 
 // The checks of DEFI_CONTACT against the mesh: every group exists (CONTACT_1), master and
 // slave surfaces of a zone share no node unless excluded (CONTACT_2), slave surfaces of

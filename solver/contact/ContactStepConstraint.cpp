@@ -1,9 +1,9 @@
-// Building the contact constraint of STAT_NON_LINE from its CONTACT keyword: the checks against
-// the analysis (model, DOFs, what is not implemented yet) and the choice of the resolution.
+// Building the contact constraint of STAT_NON_LINE from its CONTACT keyword (read by
+// solver/inputs/ContactStepReader): the checks against the analysis (model, DOFs, what is not
+// implemented yet) and the choice of the resolution.
 
 #include "solver/contact/ContactStepConstraint.hpp"
 
-#include "catalog/KeywordTree.hpp"
 #include "interpreter/Diagnostics.hpp"
 #include "solver/contact/ContinuousAdaptation.hpp"
 #include "solver/contact/ContinuousContactConstraint.hpp"
@@ -11,9 +11,7 @@
 #include "solver/contact/DualContactConstraint.hpp"
 #include "solver/contact/PenaltyContactConstraint.hpp"
 #include "solver/contact/lac/LacContactConstraint.hpp"
-#include "solver/functions/InstantList.hpp"
 #include "solver/nonlinear/MechanicalSystem.hpp"
-#include "solver/session/OperatorRegistry.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
@@ -262,38 +260,18 @@ std::unique_ptr<contact::ContactConstraint> makeContinuous(std::shared_ptr<const
   return c;
 }
 
-std::optional<FailurePolicy> interpenetrationPolicy(const KeywordTree& kw) {
-  if (!kw.has("INCREMENT")) {
-    return std::nullopt;
-  }
-  auto list = conceptData<InstantList>(kw.occurrences("INCREMENT").front().conceptValue("LIST_INST"));
-  if (list == nullptr) {
-    return std::nullopt;
-  }
-  for (const FailurePolicy& p : list->failures) {
-    if (p.event == FailurePolicy::Event::Interpenetration) {
-      return p;
-    }
-  }
-  return std::nullopt;
-}
-
 } // namespace
 
-std::unique_ptr<StepConstraint> makeContactConstraint(const KeywordTree& statNonLine,
+std::unique_ptr<StepConstraint> makeContactConstraint(const ContactStepInputs& inputs,
                                                       MechanicalSystem& system, int threads) {
-  if (!statNonLine.has("CONTACT")) {
-    return nullptr;
-  }
-  const SourceLocation at = statNonLine.locationOf("CONTACT");
-  auto def = conceptData<ContactDefinition>(statNonLine.conceptValue("CONTACT"));
-  STELLA_ASSERT(def != nullptr, "CONTACT holds no contact definition");
+  const SourceLocation& at = inputs.at;
+  const std::shared_ptr<const ContactDefinition>& def = inputs.definition;
   if (def->settings.formulation == contact::Formulation::LiaisonUnil) {
     notImplemented("FORMULATION='LIAISON_UNIL'", def->location,
                    "FORMULATION='DISCRETE' or 'CONTINUE' are available");
   }
   checkAgainstSystem(*def, system, at);
-  const std::optional<FailurePolicy> policy = interpenetrationPolicy(statNonLine);
+  const std::optional<FailurePolicy>& policy = inputs.interpenetration;
   const bool lac = std::any_of(def->zones.begin(), def->zones.end(),
                                [](const auto& z) { return z.algorithm == ContactAlgorithm::Lac; });
   if (def->settings.formulation == contact::Formulation::Continue && lac) {

@@ -14,15 +14,16 @@ ArchiveSelection readArchiveSelection(const KeywordTree& statNonLine) {
     return ArchiveSelection::every(1);
   }
   const KeywordTree& a = statNonLine.occurrences("ARCHIVAGE").front();
-  const double precision = a.realOr("PRECISION", 1.0e-6);
-  const bool absolute = a.textOr("CRITERE", "RELATIF") == "ABSOLU";
+  // CRITERE and PRECISION: in the block of INST and LIST_INST
+  const auto precision = [&a] { return a.real("PRECISION"); };
+  const auto absolute = [&a] { return a.text("CRITERE") == "ABSOLU"; };
   if (a.has("INST")) {
-    return ArchiveSelection::at(a.reals("INST"), precision, absolute);
+    return ArchiveSelection::at(a.reals("INST"), precision(), absolute());
   }
   if (a.has("LIST_INST")) {
     auto list = conceptData<RealList>(a.conceptValue("LIST_INST"));
     STELLA_ASSERT(list != nullptr, "ARCHIVAGE/LIST_INST holds no list of reals");
-    return ArchiveSelection::at(list->values, precision, absolute);
+    return ArchiveSelection::at(list->values, precision(), absolute());
   }
   const auto step = a.integerOr("PAS_ARCH", 1);
   if (step < 1) {

@@ -33,7 +33,7 @@ std::vector<Excitation> readExcitations(const KeywordTree& keywords) {
             occ.locationOf("FONC_MULT")));
       }
     }
-    if (occ.textOr("TYPE_CHARGE", "FIXE_CSTE") != "FIXE_CSTE") {
+    if (occ.text("TYPE_CHARGE") != "FIXE_CSTE") {
       throw UserError(Diagnostic::fatal(
           "LOAD_4", fmt::format("TYPE_CHARGE='{}' is not implemented yet", occ.text("TYPE_CHARGE")),
           occ.locationOf("TYPE_CHARGE")));
@@ -76,7 +76,7 @@ linalg::SolverOptions readSolverOptions(const KeywordTree& keywords) {
     return o;
   }
   const KeywordTree& s = keywords.occurrences("SOLVEUR").front();
-  const std::string method = s.textOr("METHODE", "MUMPS");
+  const std::string method = s.text("METHODE");
   auto m = linalg::solverMethodFromName(method);
   if (!m) {
     throw UserError(
@@ -98,7 +98,9 @@ linalg::SolverOptions readSolverOptions(const KeywordTree& keywords) {
   o.renumbering = s.textOr("RENUM", o.renumbering);
   o.nprec = static_cast<int>(s.integerOr("NPREC", o.nprec));
   o.pivotPercent = static_cast<double>(s.integerOr("PCENT_PIVOT", static_cast<std::int64_t>(o.pivotPercent)));
-  o.stopIfSingular = s.textOr("STOP_SINGULIER", "OUI") == "OUI";
+  if (o.method != linalg::SolverMethod::Gcpc) { // STOP_SINGULIER: the direct solvers' blocks only
+    o.stopIfSingular = s.text("STOP_SINGULIER") == "OUI";
+  }
   if (s.has("RESI_RELA") && s.real("RESI_RELA") > 0.0) {
     o.relativeResidual = s.real("RESI_RELA");
   }

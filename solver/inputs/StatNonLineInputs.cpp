@@ -149,7 +149,11 @@ std::vector<double> readInstants(const KeywordTree& inc, std::optional<double> i
                                            : inc.realOr("INST_INIT", initialTime.value_or(first));
   const double end = inc.has("NUME_INST_FIN") ? numbered("NUME_INST_FIN")
                                               : inc.realOr("INST_FIN", times.empty() ? 0.0 : times.back());
-  const double precision = inc.realOr("PRECISION", 1.0e-6);
+  // PRECISION is in the block of INST_INIT and INST_FIN; without them the instants of the list are
+  // compared to the initial state's with code_aster's default relative precision.
+  constexpr double instantPrecision = 1.0e-6;
+  const double precision =
+      inc.has("INST_INIT") || inc.has("INST_FIN") ? inc.real("PRECISION") : instantPrecision;
   auto near = [&](double a, double b) {
     return std::fabs(a - b) <= precision * std::max(std::fabs(b), 1.0e-300);
   };
@@ -190,8 +194,7 @@ std::optional<InitialResultStep> readInitialStep(const KeywordTree& kw,
     if (e.has("NUME_ORDRE")) {
       step = result->stepNumber(static_cast<int>(e.integer("NUME_ORDRE")));
     } else if (e.has("INST")) {
-      step = result->stepAtTime(e.real("INST"), e.realOr("PRECISION", 1.0e-6),
-                                e.textOr("CRITERE", "RELATIF") == "ABSOLU");
+      step = result->stepAtTime(e.real("INST"), e.real("PRECISION"), e.text("CRITERE") == "ABSOLU");
     } else if (!result->steps.empty()) {
       step = &result->steps.back();
     }

@@ -23,12 +23,12 @@ FieldExtraction readFieldExtraction(const KeywordTree& occ, const Mesh& mesh, co
       e.nodal() || FieldExtraction::gaussPointField(e.field),
       fmt::format("{} NOM_CHAM='{}' passed the catalogue but cannot be extracted", keyword, e.field));
   e.components = occ.texts("NOM_CMP");
-  e.evalField = occ.textOr("EVAL_CHAM", "VALE");
+  e.evalField = occ.text("EVAL_CHAM");
   if (e.nodal()) {
     e.nodes = selectNodes(mesh, occ);
   } else {
     e.cells = selectCells(mesh, occ);
-    e.evalPoint = occ.textOr("EVAL_ELGA", "VALE");
+    e.evalPoint = occ.text("EVAL_ELGA");
     for (std::int64_t p : occ.has("POINT") ? occ.integers("POINT") : std::vector<std::int64_t>{}) {
       e.points.push_back(static_cast<int>(p));
     }
@@ -44,7 +44,7 @@ Observations readObservations(const KeywordTree& kw, const Mesh& mesh) {
     Observations::Item item;
     item.what = readFieldExtraction(occ, mesh, "OBSERVATION");
     item.title = occ.textOr("TITRE", fmt::format("OBSERVATION_{}", number));
-    item.initial = occ.textOr("OBSE_ETAT_INIT", "OUI") == "OUI";
+    item.initial = occ.text("OBSE_ETAT_INIT") == "OUI";
     item.every = static_cast<int>(occ.integerOr("PAS_OBSE", 0));
     if (occ.has("PAS_OBSE") && item.every < 1) {
       throw UserError(Diagnostic::fatal("SNL_21", "OBSERVATION: PAS_OBSE must be at least 1",
@@ -57,8 +57,8 @@ Observations readObservations(const KeywordTree& kw, const Mesh& mesh) {
       STELLA_ASSERT(list != nullptr, "OBSERVATION/LIST_INST holds no listr8");
       item.instants = list->values;
     }
-    item.precision = occ.realOr("PRECISION", 1.0e-6);
-    item.absolute = occ.textOr("CRITERE", "RELATIF") == "ABSOLU";
+    item.precision = occ.real("PRECISION");
+    item.absolute = occ.text("CRITERE") == "ABSOLU";
     items.push_back(std::move(item));
   }
   return Observations(std::move(items));
@@ -84,7 +84,7 @@ StepMeasures readStepMeasures(const KeywordTree& kw) {
     return {};
   }
   const KeywordTree& occ = kw.occurrences("MESURE").front();
-  const bool keepTable = occ.textOr("TABLE", "NON") == "OUI";
+  const bool keepTable = occ.text("TABLE") == "OUI";
   std::optional<int> unit;
   SourceLocation unitAt;
   if (occ.has("UNITE")) {

@@ -10,10 +10,16 @@ namespace stella {
 
 namespace {
 
+// Whether a cell equals the filter's real VALE. The catalogue gives PRECISION and CRITERE to every
+// FILTRE of TEST_TABLE and to CRIT_COMP='EQ' and 'NE' of IMPR_TABLE's: without them (IMPR_TABLE's
+// LT, GT, LE, GE) the comparison is exact.
 bool realEquals(double a, double b, const KeywordTree& f) {
-  double tolerance = f.realOr("PRECISION", 1.0e-3);
-  bool absolute = f.textOr("CRITERE", "RELATIF") == "ABSOLU";
-  double diff = std::fabs(a - b);
+  if (!f.has("PRECISION")) {
+    return a == b;
+  }
+  const double tolerance = f.real("PRECISION");
+  const bool absolute = f.text("CRITERE") == "ABSOLU";
+  const double diff = std::fabs(a - b);
   return absolute ? diff <= tolerance : diff <= tolerance * std::fabs(b);
 }
 
@@ -64,7 +70,7 @@ bool keepByComparison(const std::string& crit, std::optional<int> c) {
 
 std::vector<std::size_t> applyFilter(const Table::Column& col, const std::vector<std::size_t>& rows,
                                      const KeywordTree& f) {
-  const std::string crit = f.textOr("CRIT_COMP", "EQ");
+  const std::string crit = f.text("CRIT_COMP");
   std::vector<std::size_t> kept;
   if (crit == "VIDE" || crit == "NON_VIDE") {
     for (std::size_t r : rows) {

@@ -37,13 +37,13 @@ ValueTest valueTestFromKeywords(const KeywordTree& kw, double computed, const st
   t.legend = kw.textOr("LEGENDE", legend);
   t.computed = computed;
   t.valeCalc = singleValue(kw, "VALE_CALC", "VALE_CALC_I");
-  t.toleMachine = kw.realOr("TOLE_MACHINE", 1.0e-6);
+  t.toleMachine = kw.real("TOLE_MACHINE");
   if (kw.has("REFERENCE")) {
     t.reference = kw.text("REFERENCE");
     t.valeRefe = singleValue(kw, "VALE_REFE", "VALE_REFE_I");
-    t.precision = kw.realOr("PRECISION", 1.0e-3);
+    t.precision = kw.real("PRECISION");
   }
-  t.absolute = kw.textOr("CRITERE", "RELATIF") == "ABSOLU";
+  t.absolute = kw.text("CRITERE") == "ABSOLU";
   t.ordreGrandeur = kw.realOr("ORDRE_GRANDEUR", 1.0);
   return t;
 }

@@ -117,8 +117,8 @@ std::vector<ResultStep*> selectedSteps(Result& result, const std::string& name, 
     return out;
   }
   if (kw.has("INST") || kw.has("LIST_INST")) {
-    const bool absolute = kw.textOr("CRITERE", "RELATIF") == "ABSOLU";
-    const double precision = kw.realOr("PRECISION", 1.0e-6);
+    const bool absolute = kw.text("CRITERE") == "ABSOLU";
+    const double precision = kw.real("PRECISION");
     std::vector<double> times;
     if (kw.has("INST")) {
       times = kw.reals("INST");

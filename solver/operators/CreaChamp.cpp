@@ -65,8 +65,8 @@ Value runCreaChamp(OperatorCall& call) {
   const auto concept_ = kw.conceptValue("RESULTAT");
   const auto result = conceptData<Result>(concept_);
   STELLA_ASSERT(result != nullptr, "RESULTAT holds no result");
-  const bool absolute = kw.textOr("CRITERE", "RELATIF") == "ABSOLU";
-  const ResultStep& step = selectStep(*result, concept_->name, kw, kw.realOr("PRECISION", 1.0e-6), absolute);
+  const bool absolute = kw.text("CRITERE") == "ABSOLU";
+  const ResultStep& step = selectStep(*result, concept_->name, kw, kw.real("PRECISION"), absolute);
   const std::string fieldName = kw.text("NOM_CHAM");
   const Field& field = selectField(step, concept_->name, fieldName, kw);
   checkType(kw, field, fieldName);

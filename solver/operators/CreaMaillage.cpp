@@ -90,13 +90,13 @@ Mesh apply(const Mesh& mesh, const KeywordTree& kw, std::ostream& message) {
     auto cellGroups = occ.texts("GROUP_MA");
     std::vector<std::string> nodeGroups =
         occ.has("GROUP_NO") ? occ.texts("GROUP_NO") : std::vector<std::string>{};
-    if (occ.textOr("TOUT_GROUP_MA", "NON") == "OUI") {
+    if (occ.text("TOUT_GROUP_MA") == "OUI") {
       cellGroups.clear();
       for (const auto& [g, ids] : mesh.cellGroups()) {
         cellGroups.push_back(g);
       }
     }
-    if (occ.textOr("TOUT_GROUP_NO", "NON") == "OUI") {
+    if (occ.text("TOUT_GROUP_NO") == "OUI") {
       nodeGroups.clear();
       for (const auto& [g, ids] : mesh.nodeGroups()) {
         nodeGroups.push_back(g);
@@ -118,7 +118,7 @@ Value runCreaMaillage(OperatorCall& call) {
   auto source = meshConceptOf(kw);
   auto mesh = std::make_shared<Mesh>(apply(*source->mesh, kw, call.session.message()));
   mesh->setName(call.resultName);
-  call.session.message() << meshSummary(*mesh, call.resultName, kw.integerOr("INFO", 1) >= 2);
+  call.session.message() << meshSummary(*mesh, call.resultName, kw.integer("INFO") >= 2);
   return call.makeConcept(std::make_shared<MeshConcept>(mesh));
 }
 

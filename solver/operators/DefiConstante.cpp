@@ -22,8 +22,8 @@ Value runDefiConstante(OperatorCall& call) {
   f->name = call.resultName;
   const std::string title = kw.textOr("TITRE", "");
   call.session.message() << fmt::format("  constant function {}: {} = {} for any value of TOUTPARA{}\n",
-                                        call.resultName, kw.textOr("NOM_RESU", "TOUTRESU"),
-                                        Value(value).repr(), title.empty() ? "" : " (" + title + ")");
+                                        call.resultName, kw.text("NOM_RESU"), Value(value).repr(),
+                                        title.empty() ? "" : " (" + title + ")");
   return call.makeConcept(f);
 }
 

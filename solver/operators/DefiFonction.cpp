@@ -55,7 +55,7 @@ void readPoints(const KeywordTree& kw, std::vector<double>& x, std::vector<doubl
 }
 
 void orderAbscissas(const KeywordTree& kw, std::vector<double>& x, std::vector<double>& y) {
-  bool check = kw.textOr("VERIF", "CROISSANT") == "CROISSANT";
+  bool check = kw.text("VERIF") == "CROISSANT";
   if (check) {
     for (std::size_t i = 1; i < x.size(); ++i) {
       if (!(x[i] > x[i - 1])) {
@@ -104,8 +104,8 @@ Value runDefiFonction(OperatorCall& call) {
   auto f = std::make_shared<TabulatedFunction>(kw.text("NOM_PARA"), std::move(x), std::move(y));
   f->logX = logX;
   f->logY = logY;
-  f->left = extension(kw.textOr("PROL_GAUCHE", "EXCLU"));
-  f->right = extension(kw.textOr("PROL_DROITE", "EXCLU"));
+  f->left = extension(kw.text("PROL_GAUCHE"));
+  f->right = extension(kw.text("PROL_DROITE"));
   f->name = call.resultName;
   return call.makeConcept(f);
 }

@@ -122,25 +122,12 @@ NodeCriterion criterionOf(const std::string& c) {
   return NodeCriterion::AtLeastOne;
 }
 
-std::vector<CellId> optionCells(const Mesh& m, const KeywordTree& occ) {
-  const std::string option = occ.text("OPTION");
+// CREA_GROUP_MA OPTION='SPHERE', 'CYLINDRE' or 'BANDE': the cells with CRIT_NOEUD of their nodes
+// in the sphere, the cylinder or the band.
+std::vector<CellId> cellsAround(const Mesh& m, const KeywordTree& occ, const std::string& option,
+                                const Point3& centre) {
   const auto all = allCells(m);
-  if (option == "FACE_NORMALE") {
-    return cellsFacing(m, directionOf(occ), occ.realOr("ANGL_PREC", 0.5),
-                       occ.textOr("VERI_SIGNE", "OUI") == "OUI");
-  }
-  if (option == "APPUI") {
-    const auto nodes = unionOf(nodeGroups(m, occ, "GROUP_NO"));
-    std::vector<bool> in(static_cast<std::size_t>(m.nodeCount()), false);
-    for (const NodeId n : nodes) {
-      in[static_cast<std::size_t>(n)] = true;
-    }
-    return cellsByNodes(
-        m, all, [&](NodeId n) { return in[static_cast<std::size_t>(n)]; },
-        criterionOf(occ.text("TYPE_APPUI")));
-  }
-  const Point3 centre = centreOf(m, occ);
-  const NodeCriterion crit = criterionOf(occ.textOr("CRIT_NOEUD", "AU_MOINS_UN"));
+  const NodeCriterion crit = criterionOf(occ.text("CRIT_NOEUD"));
   if (option == "SPHERE") {
     const double r = occ.real("RAYON");
     return cellsByNodes(
@@ -157,6 +144,29 @@ std::vector<CellId> optionCells(const Mesh& m, const KeywordTree& occ) {
     const Point3 normal = directionOf(occ);
     return cellsByNodes(
         m, all, [&](NodeId n) { return distanceToPlane(m.point(n), centre, normal) <= d; }, crit);
+  }
+  return {};
+}
+
+std::vector<CellId> optionCells(const Mesh& m, const KeywordTree& occ) {
+  const std::string option = occ.text("OPTION");
+  const auto all = allCells(m);
+  if (option == "FACE_NORMALE") {
+    return cellsFacing(m, directionOf(occ), occ.real("ANGL_PREC"), occ.text("VERI_SIGNE") == "OUI");
+  }
+  if (option == "APPUI") {
+    const auto nodes = unionOf(nodeGroups(m, occ, "GROUP_NO"));
+    std::vector<bool> in(static_cast<std::size_t>(m.nodeCount()), false);
+    for (const NodeId n : nodes) {
+      in[static_cast<std::size_t>(n)] = true;
+    }
+    return cellsByNodes(
+        m, all, [&](NodeId n) { return in[static_cast<std::size_t>(n)]; },
+        criterionOf(occ.text("TYPE_APPUI")));
+  }
+  const Point3 centre = centreOf(m, occ);
+  if (option == "SPHERE" || option == "CYLINDRE" || option == "BANDE") { // the options with CRIT_NOEUD
+    return cellsAround(m, occ, option, centre);
   }
   fail("DEFI_GROUP_4", "CREA_GROUP_MA OPTION='" + option + "' is not implemented yet",
        occ.locationOf("OPTION"));
@@ -185,7 +195,7 @@ std::vector<CellId> creaGroupMaCells(const Mesh& m, const KeywordTree& occ) {
   } else if (occ.has("OPTION")) {
     cells = optionCells(m, occ);
   }
-  return filterCellType(m, cells, occ.textOr("TYPE_MAILLE", "TOUT"));
+  return filterCellType(m, cells, occ.text("TYPE_MAILLE"));
 }
 
 // INTERVALLE_VALE: the values of component NOM_CMP at every node (nullopt where it is not
@@ -213,8 +223,8 @@ std::vector<std::optional<double>> nodalValues(const Mesh& m, const KeywordTree&
   const auto c = occ.conceptValue("RESULTAT");
   const auto result = conceptData<Result>(c);
   STELLA_ASSERT(result != nullptr, "RESULTAT holds no result");
-  const ResultStep* step = &selectStep(*result, c->name, occ, occ.realOr("PRECISION", 1e-6));
-  const std::string name = occ.textOr("NOM_CHAM", "DEPL");
+  const ResultStep* step = &selectStep(*result, c->name, occ, occ.real("PRECISION"));
+  const std::string name = occ.text("NOM_CHAM");
   const Field* f = step->field(name);
   if (f == nullptr || f->support() != FieldSupport::Node) {
     fail("DEFI_GROUP_9",
@@ -316,7 +326,7 @@ void creaGroupNo(Mesh& m, const KeywordTree& occ, std::vector<std::string>& made
     if (occ.has("TOUT_GROUP_MA")) {
       const auto groups = m.cellGroups();
       for (const auto& [g, cells] : groups) {
-        setGroup(g, nodesOfCells(m, cells, occ.textOr("CRIT_NOEUD", "TOUS")), false);
+        setGroup(g, nodesOfCells(m, cells, "TOUS"), false); // no CRIT_NOEUD with TOUT_GROUP_MA
       }
       return;
     }
@@ -328,8 +338,7 @@ void creaGroupNo(Mesh& m, const KeywordTree& occ, std::vector<std::string>& made
       }
       for (std::size_t i = 0; i < groups.size(); ++i) {
         setGroup(names[i],
-                 nodesOfCells(m, cellGroup(m, groups[i], occ.locationOf("GROUP_MA")),
-                              occ.textOr("CRIT_NOEUD", "TOUS")),
+                 nodesOfCells(m, cellGroup(m, groups[i], occ.locationOf("GROUP_MA")), occ.text("CRIT_NOEUD")),
                  false);
       }
       return;
@@ -359,13 +368,16 @@ void creaGroupNo(Mesh& m, const KeywordTree& occ, std::vector<std::string>& made
   }
   const std::string option = occ.text("OPTION");
   const std::string name = occ.text("NOM");
-  const double precision = occ.realOr("PRECISION", 0.0);
+  // PRECISION: ENV_SPHERE, ENV_CYLINDRE, PLAN and SEGM_DROI_ORDO only
+  const auto precisionOf = [&occ] { return occ.real("PRECISION"); };
   if (option == "ENV_SPHERE") {
+    const double precision = precisionOf();
     const Point3 c = centreOf(m, occ);
     const double r = occ.real("RAYON");
     setGroup(name, nodesWhere(m, [&](const Point3& x) { return std::abs(norm(x - c) - r) <= precision; }),
              false);
   } else if (option == "ENV_CYLINDRE") {
+    const double precision = precisionOf();
     const Point3 c = centreOf(m, occ);
     const Point3 axis = directionOf(occ);
     const double r = occ.real("RAYON");
@@ -374,6 +386,7 @@ void creaGroupNo(Mesh& m, const KeywordTree& occ, std::vector<std::string>& made
         nodesWhere(m, [&](const Point3& x) { return std::abs(distanceToAxis(x, c, axis) - r) <= precision; }),
         false);
   } else if (option == "PLAN") {
+    const double precision = precisionOf();
     const Point3 c = centreOf(m, occ);
     const Point3 normal = directionOf(occ);
     setGroup(name, nodesWhere(m, [&](const Point3& x) { return distanceToPlane(x, c, normal) <= precision; }),
@@ -404,9 +417,10 @@ void creaGroupNo(Mesh& m, const KeywordTree& occ, std::vector<std::string>& made
       candidates.resize(static_cast<std::size_t>(m.nodeCount()));
       std::iota(candidates.begin(), candidates.end(), 0);
     }
-    setGroup(name,
-             nodesOnSegment(m, candidates, a.front(), b.front(), precision, occ.text("CRITERE") == "RELATIF"),
-             true);
+    setGroup(
+        name,
+        nodesOnSegment(m, candidates, a.front(), b.front(), precisionOf(), occ.text("CRITERE") == "RELATIF"),
+        true);
   } else if (option == "INTERVALLE_VALE") {
     const auto bounds = occ.reals("VALE");
     const auto values = nodalValues(m, occ);
@@ -433,7 +447,7 @@ Value runDefiGroup(OperatorCall& call) {
   auto data = conceptData<MeshConcept>(kw.conceptValue("MAILLAGE"));
   STELLA_ASSERT(data != nullptr && data->mesh != nullptr, "MAILLAGE holds no mesh");
   Mesh& m = *data->mesh;
-  const bool alarm = kw.textOr("ALARME", "OUI") == "OUI";
+  const bool alarm = kw.text("ALARME") == "OUI";
   for (const auto& occ : kw.occurrences("DETR_GROUP_MA")) {
     for (const auto& g : occ.texts("NOM")) {
       if (!m.removeCellGroup(g) && alarm) {

@@ -38,8 +38,8 @@ std::vector<int> selectedSteps(const Result& r, const KeywordTree& occ) {
     }
   }
   if (occ.has("INST")) {
-    const bool absolute = occ.textOr("CRITERE", "RELATIF") == "ABSOLU";
-    const double precision = occ.realOr("PRECISION", 1e-6);
+    const bool absolute = occ.text("CRITERE") == "ABSOLU";
+    const double precision = occ.real("PRECISION");
     for (const double t : occ.reals("INST")) {
       const ResultStep* s = r.stepAtTime(t, precision, absolute);
       if (s == nullptr) {
@@ -255,10 +255,6 @@ Value runImprResu(OperatorCall& call) {
                                       kw.locationOf("FORMAT"))
                         .withNote("use FORMAT='MED', 'RESULTAT', 'GMSH' or 'VTU'"));
   }
-  const int defaultUnit = target.format == "MED"    ? 80
-                          : target.format == "GMSH" ? 37
-                          : target.format == "VTU"  ? 81
-                                                    : 8;
   if (target.format == "GMSH" && kw.real("VERSION") != 2.2) {
     // The catalogue refuses 1.0 and 1.2 (hors_perimetre): this guards a catalogue change.
     throw UserError(Diagnostic::fatal("IMPR_RESU_1",
@@ -267,7 +263,7 @@ Value runImprResu(OperatorCall& call) {
                                       kw.locationOf("VERSION"))
                         .withNote("stella writes VERSION=2.2: a .msh 2.2 file with $NodeData/$ElementData"));
   }
-  const int unit = static_cast<int>(kw.integerOr("UNITE", defaultUnit));
+  const int unit = static_cast<int>(kw.integer("UNITE")); // each FORMAT block of the catalogue defaults it
   target.messageFile = target.format == "RESULTAT" && unit == 6;
   if (!(target.format == "RESULTAT" && (unit == 8 || unit == 6))) {
     target.path = call.session.unitPath(unit, kw.locationOf("UNITE"), false);

@@ -25,7 +25,7 @@ void sortRows(const Table& table, const KeywordTree& sort, std::vector<std::size
     }
     keys.push_back(c);
   }
-  bool descending = sort.textOr("ORDRE", "CROISSANT") == "DECROISSANT";
+  bool descending = sort.text("ORDRE") == "DECROISSANT";
   std::stable_sort(rows.begin(), rows.end(), [&](std::size_t a, std::size_t b) {
     for (const auto* c : keys) {
       const Value& x = c->cells[a];
@@ -68,7 +68,7 @@ Table selection(const Table& table, const KeywordTree& kw) {
 
 Value runImprTable(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
-  const std::string format = kw.textOr("FORMAT", "TABLEAU");
+  const std::string format = kw.text("FORMAT");
   if (format != "TABLEAU" && format != "ASTER") {
     throw UserError(Diagnostic::fatal("TABLE_6", "IMPR_TABLE FORMAT='" + format + "' is not implemented yet",
                                       kw.locationOf("FORMAT"))
@@ -77,12 +77,13 @@ Value runImprTable(OperatorCall& call) {
   auto source = kw.conceptValue("TABLE");
   auto table = conceptData<Table>(source);
   STELLA_ASSERT(table != nullptr, "TABLE holds no table");
-  std::string separator = kw.textOr("SEPARATEUR", " ");
+  // SEPARATEUR (FORMAT='TABLEAU' only): other than a blank, the table is written as CSV.
+  const std::string separator = format == "TABLEAU" ? kw.text("SEPARATEUR") : std::string(" ");
   Table shown = selection(*table, kw);
-  const std::string realFormat = kw.textOr("FORMAT_R", "E12.5");
+  const std::string realFormat = kw.text("FORMAT_R");
   std::string text =
       separator != " " ? shown.format("CSV", separator, realFormat) : shown.format(format, " ", realFormat);
-  std::int64_t unit = kw.integerOr("UNITE", 8);
+  std::int64_t unit = kw.integer("UNITE");
   if (unit == 8) {
     call.session.result() << text << "\n";
   } else if (unit == 6) {

@@ -55,8 +55,8 @@ Value runLireMaillage(OperatorCall& call) {
     mesh->setName(call.resultName);
   }
   const auto& veri = kw.occurrences("VERI_MAIL");
-  if (!veri.empty() && veri.front().textOr("VERIF", "OUI") == "OUI") {
-    auto report = checkMesh(*mesh, veri.front().realOr("APLAT", 1e-3));
+  if (!veri.empty() && veri.front().text("VERIF") == "OUI") {
+    auto report = checkMesh(*mesh, veri.front().real("APLAT"));
     if (!report.duplicateNodes.empty()) {
       // Held until FIN: a DEFI_CONTACT may join them (CoincidentNodesAlarm.hpp).
       call.session.defer(std::make_shared<CoincidentNodesAlarm>(*mesh, report.duplicateNodes, call.location));
@@ -67,8 +67,8 @@ Value runLireMaillage(OperatorCall& call) {
       call.session.report(d);
     }
   }
-  if (kw.integerOr("INFO", 1) >= 1) {
-    call.session.message() << meshSummary(*mesh, call.resultName, kw.integerOr("INFO", 1) >= 2);
+  if (kw.integer("INFO") >= 1) {
+    call.session.message() << meshSummary(*mesh, call.resultName, kw.integer("INFO") >= 2);
   }
   return call.makeConcept(std::make_shared<MeshConcept>(mesh));
 }

@@ -55,7 +55,7 @@ Value runMecaStatique(OperatorCall& call) {
   system.phases().numbering +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - numberingStart).count();
   system.solver().setOptions(readSolverOptions(kw));
-  const bool withStress = kw.textOr("OPTION", "SIEF_ELGA") == "SIEF_ELGA";
+  const bool withStress = kw.text("OPTION") == "SIEF_ELGA";
   auto& msg = call.session.message();
   msg << fmt::format("   equations: {} ({} displacement DOFs, {} Lagrange multipliers)\n",
                      system.dofs().size(), system.dofs().physicalCount(), system.dofs().lagrangeCount());

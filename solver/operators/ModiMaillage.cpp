@@ -77,8 +77,8 @@ void deform(OperatorCall& call, Mesh& mesh, const KeywordTree& occ) {
   const auto c = occ.conceptValue("RESULTAT");
   const auto result = conceptData<Result>(c);
   STELLA_ASSERT(result != nullptr, "RESULTAT holds no result");
-  const ResultStep* step = &selectStep(*result, c->name, occ, occ.realOr("PRECISION", 1e-6));
-  const std::string name = occ.textOr("NOM_CHAM", "DEPL");
+  const ResultStep* step = &selectStep(*result, c->name, occ, occ.real("PRECISION"));
+  const std::string name = occ.text("NOM_CHAM");
   const Field* f = step->field(name);
   if (f == nullptr || f->support() != FieldSupport::Node) {
     throw UserError(Diagnostic::fatal(
@@ -186,7 +186,7 @@ Value runModiMaillage(OperatorCall& call) {
     } else if (occ.has("POIN_2")) {
       axis = point(occ.reals("POIN_2")) - p1;
     }
-    rotateMesh(mesh, p1, axis, occ.realOr("ANGLE", 0.0));
+    rotateMesh(mesh, p1, axis, occ.real("ANGLE"));
   }
   if (kw.has("ECHELLE")) {
     scaleMesh(mesh, kw.real("ECHELLE"));

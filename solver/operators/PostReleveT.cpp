@@ -45,14 +45,14 @@ void refuseUnsupported(const KeywordTree& a) {
       refuse(a, k, k);
     }
   }
-  if (a.textOr("REPERE", "GLOBAL") != "GLOBAL") {
-    refuse(a, fmt::format("REPERE='{}'", a.text("REPERE")), "REPERE");
-  }
   const auto operations = a.texts("OPERATION");
   for (const auto& op : operations) {
     if (op != "EXTRACTION" && op != "MOYENNE") {
       refuse(a, fmt::format("OPERATION='{}'", op), "OPERATION");
     }
+  }
+  if (a.text("REPERE") != "GLOBAL") { // in the block of every OPERATION but EXTREMA and MOYENNE_ARITH
+    refuse(a, fmt::format("REPERE='{}'", a.text("REPERE")), "REPERE");
   }
   if (a.has("RESULTANTE") && std::find(operations.begin(), operations.end(), "MOYENNE") != operations.end()) {
     refuse(a, "RESULTANTE with OPERATION='MOYENNE'", "RESULTANTE");
@@ -74,8 +74,8 @@ std::vector<const ResultStep*> wantedSteps(const Result& result, const std::stri
     return out;
   }
   if (a.has("INST") || a.has("LIST_INST")) {
-    const double precision = a.realOr("PRECISION", 1.0e-6);
-    const bool absolute = a.textOr("CRITERE", "RELATIF") == "ABSOLU";
+    const double precision = a.real("PRECISION");
+    const bool absolute = a.text("CRITERE") == "ABSOLU";
     std::vector<double> times;
     if (a.has("INST")) {
       times = a.reals("INST");

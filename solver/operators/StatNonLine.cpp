@@ -14,6 +14,7 @@
 #include "solver/database/Result.hpp"
 #include "solver/inputs/ArchivingReader.hpp"
 #include "solver/inputs/CommandInputs.hpp"
+#include "solver/inputs/ContactStepReader.hpp"
 #include "solver/inputs/ElementCharacteristicsReader.hpp"
 #include "solver/inputs/Selection.hpp"
 #include "solver/inputs/StatNonLineInputs.hpp"
@@ -179,8 +180,9 @@ Value runStatNonLine(OperatorCall& call) {
   NewtonDriver driver(system, settings, tables);
   const std::unique_ptr<DofMonitor> monitor = readDofMonitor(kw, system); // SUIVI_DDL
   driver.setIterationColumns(monitor.get());
+  const std::optional<ContactStepInputs> contactInputs = readContactStepInputs(kw); // CONTACT
   const std::unique_ptr<StepConstraint> constraint =
-      makeContactConstraint(kw, system, call.session.options().cpus);
+      contactInputs ? makeContactConstraint(*contactInputs, system, call.session.options().cpus) : nullptr;
   if (constraint != nullptr) {
     constraint->setDiagnosticSink(&call.session); // its alarms count in the job diagnostic
   }

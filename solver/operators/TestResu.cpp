@@ -105,7 +105,7 @@ void testFieldValue(OperatorCall& call, const KeywordTree& occ, const Mesh& mesh
       header.emplace_back("POINT", sel.label.substr(cut + 7));
     }
   }
-  if (occ.textOr("VALE_ABS", "NON") == "OUI") {
+  if (occ.text("VALE_ABS") == "OUI") {
     value = std::fabs(value);
   }
   reportTest(call.session, header, valueTestFromKeywords(occ, value, fieldName));

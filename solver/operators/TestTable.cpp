@@ -49,7 +49,7 @@ Value runTestTable(OperatorCall& call) {
                                      : "add a FILTRE, or TYPE_TEST='MIN', 'MAX', 'SOMM' or 'SOMM_ABS'"));
   }
   double computed = type.empty() ? values.front() : reduceByTestType(type, values);
-  if (kw.textOr("VALE_ABS", "NON") == "OUI") {
+  if (kw.text("VALE_ABS") == "OUI") {
     computed = std::fabs(computed);
   }
   std::vector<std::pair<std::string, std::string>> header{{"TABLE", tableConcept->name}, {"NOM_PARA", para}};
@@ -60,7 +60,7 @@ Value runTestTable(OperatorCall& call) {
     std::string value =
         f.has("VALE") ? Value(f.real("VALE")).repr()
                       : (f.has("VALE_I") ? std::to_string(f.integer("VALE_I")) : f.textOr("VALE_K", ""));
-    header.emplace_back(f.text("NOM_PARA"), f.textOr("CRIT_COMP", "EQ") + " " + value);
+    header.emplace_back(f.text("NOM_PARA"), f.text("CRIT_COMP") + " " + value);
   }
   reportTest(call.session, header, valueTestFromKeywords(kw, computed, para));
   return Value();

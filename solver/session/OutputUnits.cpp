@@ -17,7 +17,7 @@ std::string writtenFormat(const std::string& command, const KeywordTree& kw) {
   if (command == "IMPR_TABLE") {
     return "text";
   }
-  const std::string format = kw.textOr("FORMAT", "MED");
+  const std::string format = kw.text("FORMAT");
   return format == "RESULTAT" ? "text" : format;
 }
 

@@ -97,6 +97,20 @@ check "quick run: the written units are listed" grep -q "wrote .*units.30" err.t
 check "quick run: a --unit only read is not copied back" sh -c '! grep -q "input.txt" err.txt'
 check "quick run: the data file is unchanged" grep -q "^read only$" input.txt
 check "quick run: no RUN_2 alarm for an output --unit" sh -c '! grep -q RUN_2 units.mess'
+# A result file of another format (IMPR_RESU FORMAT='GMSH' on unit 37) comes back the same way,
+# as <stem>.37, a Gmsh file (issue 15, "What users open").
+write_bar_mesh
+cat > gmsh.comm <<'COMM'
+DEBUT()
+MA = LIRE_MAILLAGE(FORMAT='ASTER', UNITE=20)
+IMPR_RESU(FORMAT='GMSH', UNITE=37, RESU=_F(MAILLAGE=MA))
+FIN()
+COMM
+rm -f gmsh.37
+"$stella" run gmsh.comm --quiet --unit 20=bar.mail >out.txt 2>err.txt; code=$?
+check "quick run, GMSH on unit 37: exit 0" test $code -eq 0
+check "quick run: unit 37 comes back as gmsh.37, a Gmsh file" grep -q '^\$MeshFormat' gmsh.37
+check "quick run: unit 37 is listed" grep -q "wrote .*gmsh.37" err.txt
 
 # --reference-only: VALE_CALC (non-regression) lines are printed with their difference but not
 # counted; only the reference lines decide OK / NOOK, and a file without any is NO_TEST_RESU.

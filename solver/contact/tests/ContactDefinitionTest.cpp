@@ -2,7 +2,10 @@
 // checks (unknown group, shared master/slave nodes, overlapping slave surfaces, inward normals).
 
 #include "solver/contact/ContactDefinition.hpp"
+#include "catalog/KeywordTree.hpp"
+#include "catalog/tests/CatalogRun.hpp"
 #include "solver/contact/tests/ContactTestMeshes.hpp"
+#include "solver/inputs/ContactReader.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 #include "solver/mesh/MeshTransform.hpp"
 
@@ -11,29 +14,18 @@
 namespace stella::contact {
 namespace {
 
-using testing::simple;
-
-KeywordTree zoneTree(const std::string& master, const std::string& slave,
-                     std::vector<SimpleKeyword> extra = {}) {
-  KeywordTree z;
-  z.addSimple(simple("GROUP_MA_MAIT", {Value(master)}));
-  z.addSimple(simple("GROUP_MA_ESCL", {Value(slave)}));
-  for (auto& k : extra) {
-    z.addSimple(std::move(k));
-  }
-  return z;
+// DEFI_CONTACT's keyword tree as the catalogue validates it (defaults filled in active blocks),
+// from the keywords of the call after MODELE=: the reader reads what validation gives it.
+KeywordTree definitionTree(const std::string& keywords) {
+  auto r = catalog_test::run("CONT = DEFI_CONTACT(MODELE=MO, " + keywords + ")\n");
+  EXPECT_TRUE(catalog_test::valid(*r));
+  EXPECT_EQ(r->handler.calls.back().first, "DEFI_CONTACT");
+  return r->last().keywords;
 }
 
-KeywordTree definitionTree(std::vector<KeywordTree> zones, std::vector<SimpleKeyword> global = {}) {
-  KeywordTree kw;
-  for (auto& k : global) {
-    kw.addSimple(std::move(k));
-  }
-  FactorKeyword f;
-  f.name = "ZONE";
-  f.occurrences = std::move(zones);
-  kw.addFactor(std::move(f));
-  return kw;
+std::string zone(const std::string& master, const std::string& slave, const std::string& extra = "") {
+  return "_F(GROUP_MA_MAIT='" + master + "', GROUP_MA_ESCL='" + slave + "'" + (extra.empty() ? "" : ", ") +
+         extra + ")";
 }
 
 std::shared_ptr<const Mesh> blocks(double gap) {
@@ -50,15 +42,12 @@ std::string errorId(const std::function<void()>& f) {
 }
 
 TEST(ContactDefinition, ReadsZonesAndGlobalSettings) {
-  auto kw = definitionTree(
-      {zoneTree("A_YMAX", "B_YMIN",
-                {simple("ALGO_CONT", {Value("PENALISATION")}), simple("E_N", {Value(1.0e6)}),
-                 simple("APPARIEMENT", {Value("NODAL")}), simple("DIST_APPA", {Value(0.2)}),
-                 simple("TOLE_PROJ_EXT", {Value(0.1)}), simple("COULOMB", {Value(0.3)}),
-                 simple("E_T", {Value(1.0e5)}), simple("COEF_MATR_FROT", {Value(0.5)})})},
-      {simple("FORMULATION", {Value("DISCRETE")}), simple("FROTTEMENT", {Value("COULOMB")}),
-       simple("REAC_GEOM", {Value("CONTROLE")}), simple("NB_ITER_GEOM", {Value(std::int64_t{3})}),
-       simple("RESI_ABSO", {Value(1e-5)}), simple("LISSAGE", {Value("OUI")})});
+  auto kw =
+      definitionTree("FORMULATION='DISCRETE', FROTTEMENT='COULOMB', REAC_GEOM='CONTROLE', NB_ITER_GEOM=3, "
+                     "RESI_ABSO=1e-5, LISSAGE='OUI', ZONE=" +
+                     zone("A_YMAX", "B_YMIN",
+                          "ALGO_CONT='PENALISATION', E_N=1.0e6, APPARIEMENT='NODAL', DIST_APPA=0.2, "
+                          "TOLE_PROJ_EXT=0.1, COULOMB=0.3, E_T=1.0e5, COEF_MATR_FROT=0.5"));
   auto def = readContactDefinition(kw, blocks(0.0));
   ASSERT_EQ(def->zones.size(), 1u);
   const auto& z = def->zones[0];
@@ -80,19 +69,15 @@ TEST(ContactDefinition, ReadsZonesAndGlobalSettings) {
 }
 
 TEST(ContactDefinition, KeepsContinueFormulation) {
-  // A hand-built tree holds the catalogue's defaults that validation would give a CONTINUE definition.
-  auto kw = definitionTree(
-      {zoneTree("A_YMAX", "B_YMIN",
-                {simple("ALGO_CONT", {Value("LAC")}), simple("CONTACT_INIT", {Value("OUI")})})},
-      {simple("FORMULATION", {Value("CONTINUE")}), simple("ALGO_RESO_CONT", {Value("NEWTON")}),
-       simple("RESI_CONT", {Value(-1.0)}), simple("CONT_STAT_ELAS", {Value(0)})});
+  auto kw = definitionTree("FORMULATION='CONTINUE', ZONE=" +
+                           zone("A_YMAX", "B_YMIN", "ALGO_CONT='LAC', CONTACT_INIT='OUI'"));
   auto def = readContactDefinition(kw, blocks(0.1));
   EXPECT_EQ(def->settings.formulation, Formulation::Continue);
   EXPECT_EQ(def->zones[0].algorithm, ContactAlgorithm::Lac);
 }
 
 TEST(ContactDefinition, UnknownGroupIsNamed) {
-  auto def = readContactDefinition(definitionTree({zoneTree("A_YMAX", "B_BOTTOM")}), blocks(0.1));
+  auto def = readContactDefinition(definitionTree("ZONE=" + zone("A_YMAX", "B_BOTTOM")), blocks(0.1));
   const auto e = errorId([&] { checkContactDefinition(*def); });
   EXPECT_EQ(e.substr(0, 9), "CONTACT_1");
   EXPECT_NE(e.find("B_BOTTOM"), std::string::npos) << e;
@@ -100,24 +85,23 @@ TEST(ContactDefinition, UnknownGroupIsNamed) {
 
 TEST(ContactDefinition, SharedNodesAreFatalUnlessExcluded) {
   // Master and slave on the same block: A_YMAX and A_XMAX share the corner node (1, 1).
-  auto def = readContactDefinition(definitionTree({zoneTree("A_YMAX", "A_XMAX")}), blocks(0.1));
+  auto def = readContactDefinition(definitionTree("ZONE=" + zone("A_YMAX", "A_XMAX")), blocks(0.1));
   const auto e = errorId([&] { checkContactDefinition(*def); });
   EXPECT_EQ(e.substr(0, 9), "CONTACT_2") << e;
   EXPECT_NE(e.find("share 1 node"), std::string::npos) << e;
   // Excluding A_XMAX's nodes on A_YMAX (group of the shared corner) lifts the error.
   auto mesh = std::make_shared<Mesh>(testing::twoBlocks(CellType::QUAD4, 2, 3, 0.1));
   mesh->setNodeGroup("CORNER", {*mesh->findNode(mesh->nodeName(2 * 3 + 2))}); // (1,1) of a 2x2 block
-  auto def2 = readContactDefinition(definitionTree({zoneTree("A_YMAX", "A_XMAX",
-                                                             {simple("SANS_GROUP_NO", {Value("CORNER")}),
-                                                              simple("VERI_NORM", {Value("NON")})})}),
-                                    mesh);
+  auto def2 = readContactDefinition(
+      definitionTree("VERI_NORM='NON', ZONE=" + zone("A_YMAX", "A_XMAX", "SANS_GROUP_NO='CORNER'")), mesh);
   def2->settings.checkNormals = false;
   EXPECT_NO_THROW(checkContactDefinition(*def2));
 }
 
 TEST(ContactDefinition, SlaveSurfacesOfZonesMustBeDisjoint) {
   auto def = readContactDefinition(
-      definitionTree({zoneTree("A_YMAX", "B_YMIN"), zoneTree("A_XMAX", "B_YMIN")}), blocks(0.1));
+      definitionTree("ZONE=(" + zone("A_YMAX", "B_YMIN") + ", " + zone("A_XMAX", "B_YMIN") + ")"),
+      blocks(0.1));
   const auto e = errorId([&] { checkContactDefinition(*def); });
   EXPECT_EQ(e.substr(0, 9), "CONTACT_3") << e;
   EXPECT_NE(e.find("B_YMIN"), std::string::npos) << e;
@@ -129,7 +113,7 @@ TEST(ContactDefinition, InwardNormalsPointToOrientation) {
   const CellId c = mesh->cellGroup("B_YMIN")->front();
   auto nodes = mesh->mutableCellNodes(c);
   std::swap(nodes[0], nodes[1]);
-  auto def = readContactDefinition(definitionTree({zoneTree("A_YMAX", "B_YMIN")}), mesh);
+  auto def = readContactDefinition(definitionTree("ZONE=" + zone("A_YMAX", "B_YMIN")), mesh);
   const auto e = errorId([&] { checkContactDefinition(*def); });
   EXPECT_EQ(e.substr(0, 9), "CONTACT_5") << e;
   EXPECT_NE(e.find("B_YMIN"), std::string::npos) << e;
@@ -152,7 +136,7 @@ TEST(ContactDefinition, OrientedSkinOfClockwiseCellsPassesVeriNorm) {
     for (const char* g : {"A_YMAX", "B_YMIN"}) {
       orientSkin(*mesh, *mesh->cellGroup(g), {});
     }
-    auto def = readContactDefinition(definitionTree({zoneTree("A_YMAX", "B_YMIN")}), mesh);
+    auto def = readContactDefinition(definitionTree("ZONE=" + zone("A_YMAX", "B_YMIN")), mesh);
     EXPECT_NO_THROW(checkContactDefinition(*def)) << name(t);
     for (const CellId c : *mesh->cellGroup("A_YMAX")) {
       EXPECT_GT(cellNormal(*mesh, c)[1], 0.0) << name(t);
@@ -165,7 +149,7 @@ TEST(ContactDefinition, OrientedSkinOfClockwiseCellsPassesVeriNorm) {
 
 TEST(ContactDefinition, ThreeDimensionalFacesAccepted) {
   auto mesh = std::make_shared<const Mesh>(testing::twoBlocks(CellType::HEXA8, 2, 2, 0.0));
-  auto def = readContactDefinition(definitionTree({zoneTree("A_ZMAX", "B_ZMIN")}), mesh);
+  auto def = readContactDefinition(definitionTree("ZONE=" + zone("A_ZMAX", "B_ZMIN")), mesh);
   EXPECT_NO_THROW(checkContactDefinition(*def));
   EXPECT_EQ(zoneSlaveNodes(*mesh, def->zones[0]).size(), 9u);
 }
