@@ -98,7 +98,8 @@ linalg::SolverOptions readSolverOptions(const KeywordTree& keywords) {
   o.renumbering = s.textOr("RENUM", o.renumbering);
   o.nprec = static_cast<int>(s.integerOr("NPREC", o.nprec));
   o.pivotPercent = static_cast<double>(s.integerOr("PCENT_PIVOT", static_cast<std::int64_t>(o.pivotPercent)));
-  if (o.method != linalg::SolverMethod::Gcpc) { // STOP_SINGULIER: the direct solvers' blocks only
+  const bool iterative = o.method == linalg::SolverMethod::Gcpc || o.method == linalg::SolverMethod::Petsc;
+  if (!iterative) { // STOP_SINGULIER: the direct solvers' blocks only
     o.stopIfSingular = s.text("STOP_SINGULIER") == "OUI";
   }
   if (s.has("RESI_RELA") && s.real("RESI_RELA") > 0.0) {
