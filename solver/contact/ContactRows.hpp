@@ -8,7 +8,7 @@
 
 #include "solver/contact/ContactPairing.hpp"
 #include "solver/contact/PenaltyContact.hpp"
-#include "solver/nonlinear/DofMap.hpp"
+#include "solver/assembly/DofMap.hpp"
 
 #include <vector>
 

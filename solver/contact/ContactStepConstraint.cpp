@@ -11,7 +11,7 @@
 #include "solver/contact/DualContactConstraint.hpp"
 #include "solver/contact/PenaltyContactConstraint.hpp"
 #include "solver/contact/lac/LacContactConstraint.hpp"
-#include "solver/nonlinear/MechanicalSystem.hpp"
+#include "solver/assembly/MechanicalSystem.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>

@@ -7,7 +7,7 @@
 #include "catalog/KeywordTree.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/functions/InstantList.hpp"
-#include "solver/nonlinear/MechanicalSystem.hpp"
+#include "solver/assembly/MechanicalSystem.hpp"
 #include "solver/nonlinear/NewtonDriver.hpp"
 #include "solver/nonlinear/TimeStepper.hpp"
 

@@ -6,7 +6,7 @@
 
 #include "solver/nonlinear/FieldExtraction.hpp"
 #include "solver/nonlinear/IterationColumns.hpp"
-#include "solver/nonlinear/MechanicalSystem.hpp"
+#include "solver/assembly/MechanicalSystem.hpp"
 
 #include <memory>
 #include <vector>

@@ -2,7 +2,7 @@
 // The linear static solve of MECA_STATIQUE on a MechanicalSystem: K u = F with the dualised
 // relations and eliminated DOFs, the elastic matrix factorised once and reused for every instant.
 
-#include "solver/nonlinear/MechanicalSystem.hpp"
+#include "solver/assembly/MechanicalSystem.hpp"
 #include "solver/nonlinear/PointState.hpp"
 
 namespace stella {

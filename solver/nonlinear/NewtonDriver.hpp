@@ -14,7 +14,7 @@
 
 #include "solver/nonlinear/ConvergenceVerif.hpp"
 #include "solver/nonlinear/IterationColumns.hpp"
-#include "solver/nonlinear/MechanicalSystem.hpp"
+#include "solver/assembly/MechanicalSystem.hpp"
 #include "solver/nonlinear/PointState.hpp"
 #include "solver/nonlinear/StepConstraint.hpp"
 

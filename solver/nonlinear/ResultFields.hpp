@@ -4,7 +4,7 @@
 // force fields REAC_NODA / FORC_NODA from a physical-size vector.
 
 #include "solver/database/Result.hpp"
-#include "solver/nonlinear/DofMap.hpp"
+#include "solver/assembly/DofMap.hpp"
 #include "solver/nonlinear/PointState.hpp"
 
 #include <Eigen/Dense>

@@ -31,8 +31,8 @@
 // search). On request, a factorize() call with the values already factorised keeps the factors.
 
 #include "solver/mesh/Mesh.hpp"
-#include "solver/nonlinear/DofMap.hpp"
-#include "solver/nonlinear/StiffnessMatrix.hpp"
+#include "solver/assembly/DofMap.hpp"
+#include "solver/assembly/StiffnessMatrix.hpp"
 
 #include "solver/linalg/LinearSolver.hpp"
 #include <Eigen/Sparse>

@@ -9,7 +9,7 @@
 // NOM_TABLE='STAT')); UNITE writes it to that unit at the end of the command.
 
 #include "solver/database/Result.hpp"
-#include "solver/nonlinear/MechanicalSystem.hpp"
+#include "solver/assembly/MechanicalSystem.hpp"
 #include "solver/post/Table.hpp"
 
 #include <chrono>

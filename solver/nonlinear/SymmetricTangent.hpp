@@ -4,7 +4,7 @@
 // storage, an LDL^T factorisation). Newton then converges to the same solution (the residual is
 // unchanged), possibly in more iterations.
 
-#include "solver/nonlinear/StiffnessMatrix.hpp"
+#include "solver/assembly/StiffnessMatrix.hpp"
 
 namespace stella {
 

@@ -6,7 +6,7 @@
 // command does not compute: without CONTACT there is no contact line but "no contact".
 
 #include "catalog/KeywordTree.hpp"
-#include "solver/nonlinear/MechanicalSystem.hpp"
+#include "solver/assembly/MechanicalSystem.hpp"
 #include "solver/nonlinear/NewtonDriver.hpp"
 #include "solver/nonlinear/PhaseTimes.hpp"
 #include "solver/nonlinear/StepConstraint.hpp"

@@ -2,7 +2,7 @@
 """The keyword tree stays in the inputs layer (issue 15): the files that read a command's keywords
 are the operators (solver/operators/), the readers beside them (solver/inputs/), the session and
 the job that call them (solver/session/, solver/job/), the catalogue and the command-line tools.
-Numerics (model, fem, mesh, nonlinear, contact, linalg, behaviour, post, io, functions, database)
+Numerics (model, fem, mesh, assembly, nonlinear, contact, linalg, behaviour, post, io, functions, database)
 receive plain structs: none of their files may include catalog/KeywordTree.hpp, directly or
 through another header (catalog/Catalog.hpp, solver/session/OperatorRegistry.hpp...).
 

@@ -17,7 +17,7 @@
 #include "solver/contact/MasterCellIndex.hpp"
 #include "solver/contact/mortar/MortarSearch.hpp"
 #include "solver/contact/mortar/MortarSegments.hpp"
-#include "solver/nonlinear/DofMap.hpp"
+#include "solver/assembly/DofMap.hpp"
 
 #include <array>
 #include <map>

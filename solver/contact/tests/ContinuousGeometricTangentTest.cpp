@@ -13,7 +13,7 @@
 #include "solver/contact/tests/ContactTestMeshes.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 #include "solver/model/Model.hpp"
-#include "solver/nonlinear/DofMap.hpp"
+#include "solver/assembly/DofMap.hpp"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 
 #include "solver/fem/BoxMesh.hpp"
 #include "solver/model/ModelBuilder.hpp"
-#include "solver/nonlinear/MechanicalSystem.hpp"
+#include "solver/assembly/MechanicalSystem.hpp"
 
 #include <gtest/gtest.h>
 

@@ -17,7 +17,7 @@
 
 #include "solver/fem/BoxMesh.hpp"
 #include "solver/model/ModelBuilder.hpp"
-#include "solver/nonlinear/MechanicalSystem.hpp"
+#include "solver/assembly/MechanicalSystem.hpp"
 #include "solver/nonlinear/PhaseTimes.hpp"
 #include "solver/nonlinear/PointState.hpp"
 

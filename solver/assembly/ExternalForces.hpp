@@ -4,7 +4,7 @@
 // each load scaled by its FONC_MULT.
 
 #include "solver/model/MaterialField.hpp"
-#include "solver/nonlinear/DofMap.hpp"
+#include "solver/assembly/DofMap.hpp"
 #include "solver/nonlinear/Excitation.hpp"
 
 #include <Eigen/Dense>

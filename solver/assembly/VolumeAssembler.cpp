@@ -1,6 +1,6 @@
 // VolumeAssembler: element integration and scattering over the volume cells.
 
-#include "solver/nonlinear/VolumeAssembler.hpp"
+#include "solver/assembly/VolumeAssembler.hpp"
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/fem/ElementMatrices.hpp"

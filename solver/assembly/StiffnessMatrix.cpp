@@ -1,7 +1,7 @@
 // StiffnessMatrix: the cell pattern, the map of element matrices into it, and the growing extra
 // pattern of couplings outside the cells.
 
-#include "solver/nonlinear/StiffnessMatrix.hpp"
+#include "solver/assembly/StiffnessMatrix.hpp"
 
 #include <algorithm>
 #include <atomic>

@@ -4,7 +4,7 @@
 // reactions; REAC_NODA = FORC_NODA - external forces.
 
 #include "solver/database/Field.hpp"
-#include "solver/nonlinear/DofMap.hpp"
+#include "solver/assembly/DofMap.hpp"
 
 #include <Eigen/Dense>
 

@@ -1,10 +1,10 @@
 // ExternalForces: integration of the loads of AFFE_CHAR_MECA on skins and volumes.
 
-#include "solver/nonlinear/ExternalForces.hpp"
+#include "solver/assembly/ExternalForces.hpp"
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/loads/SkinLoads.hpp"
-#include "solver/nonlinear/VolumeAssembler.hpp"
+#include "solver/assembly/VolumeAssembler.hpp"
 
 #include <fmt/format.h>
 

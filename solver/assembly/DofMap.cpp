@@ -1,6 +1,6 @@
 // DofMap: physical DOFs of the active nodes, then Lagrange multipliers.
 
-#include "solver/nonlinear/DofMap.hpp"
+#include "solver/assembly/DofMap.hpp"
 
 #include <fmt/format.h>
 

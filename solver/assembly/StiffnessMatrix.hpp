@@ -11,7 +11,7 @@
 
 #include "solver/linalg/SparseMatrix.hpp"
 #include "solver/mesh/Mesh.hpp"
-#include "solver/nonlinear/DofMap.hpp"
+#include "solver/assembly/DofMap.hpp"
 
 #include <Eigen/Sparse>
 #include <cstdint>

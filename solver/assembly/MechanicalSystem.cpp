@@ -1,9 +1,9 @@
 // MechanicalSystem: equations, constraints and eliminated DOFs of the EXCIT loads.
 
-#include "solver/nonlinear/MechanicalSystem.hpp"
+#include "solver/assembly/MechanicalSystem.hpp"
 
 #include "interpreter/Diagnostics.hpp"
-#include "solver/nonlinear/ExternalForces.hpp"
+#include "solver/assembly/ExternalForces.hpp"
 
 #include <fmt/format.h>
 

@@ -8,9 +8,9 @@
 #include "solver/behaviour/Behaviour.hpp"
 #include "solver/model/ElementCharacteristics.hpp"
 #include "solver/nonlinear/CellBehaviours.hpp"
-#include "solver/nonlinear/DofMap.hpp"
+#include "solver/assembly/DofMap.hpp"
 #include "solver/nonlinear/PointState.hpp"
-#include "solver/nonlinear/StiffnessMatrix.hpp"
+#include "solver/assembly/StiffnessMatrix.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>

@@ -6,11 +6,11 @@
 
 #include "solver/model/MaterialField.hpp"
 #include "solver/nonlinear/CellBehaviours.hpp"
-#include "solver/nonlinear/DofMap.hpp"
+#include "solver/assembly/DofMap.hpp"
 #include "solver/nonlinear/Excitation.hpp"
 #include "solver/nonlinear/PhaseTimes.hpp"
 #include "solver/nonlinear/SaddleSolver.hpp"
-#include "solver/nonlinear/VolumeAssembler.hpp"
+#include "solver/assembly/VolumeAssembler.hpp"
 
 #include <memory>
 #include <vector>

@@ -1,10 +1,10 @@
 // NodalForces: B^T sigma assembled from a stored SIEF_ELGA.
 
-#include "solver/nonlinear/NodalForces.hpp"
+#include "solver/assembly/NodalForces.hpp"
 
 #include "solver/fem/ElementMatrices.hpp"
 #include "solver/fem/Kinematics.hpp"
-#include "solver/nonlinear/VolumeAssembler.hpp"
+#include "solver/assembly/VolumeAssembler.hpp"
 
 namespace stella {
 

@@ -6,7 +6,7 @@
 #include "solver/fem/BoxMesh.hpp"
 #include "solver/model/ModelBuilder.hpp"
 #include "solver/nonlinear/ElasticSolve.hpp"
-#include "solver/nonlinear/MechanicalSystem.hpp"
+#include "solver/assembly/MechanicalSystem.hpp"
 
 #include <gtest/gtest.h>
 
