@@ -3,8 +3,8 @@
 #include "solver/assembly/ExternalForces.hpp"
 
 #include "interpreter/Diagnostics.hpp"
-#include "solver/loads/SkinLoads.hpp"
 #include "solver/assembly/VolumeAssembler.hpp"
+#include "solver/loads/SkinLoads.hpp"
 
 #include <fmt/format.h>
 

@@ -3,8 +3,8 @@
 // pressures and forces on skins, volume forces and gravity (rho g, RHO from the material),
 // each load scaled by its FONC_MULT.
 
-#include "solver/model/MaterialField.hpp"
 #include "solver/assembly/DofMap.hpp"
+#include "solver/model/MaterialField.hpp"
 #include "solver/nonlinear/Excitation.hpp"
 
 #include <Eigen/Dense>

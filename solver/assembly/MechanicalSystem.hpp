@@ -4,13 +4,13 @@
 // cells, the eliminated DOFs of the kinematic loads, the constraint rows, and the solver that
 // keeps its factorisation.
 
+#include "solver/assembly/DofMap.hpp"
+#include "solver/assembly/VolumeAssembler.hpp"
 #include "solver/model/MaterialField.hpp"
 #include "solver/nonlinear/CellBehaviours.hpp"
-#include "solver/assembly/DofMap.hpp"
 #include "solver/nonlinear/Excitation.hpp"
 #include "solver/nonlinear/PhaseTimes.hpp"
 #include "solver/nonlinear/SaddleSolver.hpp"
-#include "solver/assembly/VolumeAssembler.hpp"
 
 #include <memory>
 #include <vector>

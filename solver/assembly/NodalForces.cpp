@@ -2,9 +2,9 @@
 
 #include "solver/assembly/NodalForces.hpp"
 
+#include "solver/assembly/VolumeAssembler.hpp"
 #include "solver/fem/ElementMatrices.hpp"
 #include "solver/fem/Kinematics.hpp"
-#include "solver/assembly/VolumeAssembler.hpp"
 
 namespace stella {
 

@@ -3,8 +3,8 @@
 // Gauss points (physical DOF vector), the internal forces in equilibrium with the loads and the
 // reactions; REAC_NODA = FORC_NODA - external forces.
 
-#include "solver/database/Field.hpp"
 #include "solver/assembly/DofMap.hpp"
+#include "solver/database/Field.hpp"
 
 #include <Eigen/Dense>
 

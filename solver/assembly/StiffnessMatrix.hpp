@@ -9,9 +9,9 @@
 //
 // Symmetric tangents keep the upper triangle only (j >= i); unsymmetric ones both.
 
+#include "solver/assembly/DofMap.hpp"
 #include "solver/linalg/SparseMatrix.hpp"
 #include "solver/mesh/Mesh.hpp"
-#include "solver/assembly/DofMap.hpp"
 
 #include <Eigen/Sparse>
 #include <cstdint>

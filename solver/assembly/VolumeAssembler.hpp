@@ -5,12 +5,12 @@
 // the slow path kept for small tests) (physical DOFs only); then the discrete springs (AFFE_CARA_ELEM
 // K_T_D_N), whose constant stiffness k adds k to the matrix and k (uStart + du) to the internal forces.
 
+#include "solver/assembly/DofMap.hpp"
+#include "solver/assembly/StiffnessMatrix.hpp"
 #include "solver/behaviour/Behaviour.hpp"
 #include "solver/model/ElementCharacteristics.hpp"
 #include "solver/nonlinear/CellBehaviours.hpp"
-#include "solver/assembly/DofMap.hpp"
 #include "solver/nonlinear/PointState.hpp"
-#include "solver/assembly/StiffnessMatrix.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>

@@ -6,9 +6,9 @@
 //       structure (lambda >= 0 pushes the slave node along the master's outward normal);
 //   T1, T2  the same with the tangents (relative slip of the slave node on the master).
 
+#include "solver/assembly/DofMap.hpp"
 #include "solver/contact/ContactPairing.hpp"
 #include "solver/contact/PenaltyContact.hpp"
-#include "solver/assembly/DofMap.hpp"
 
 #include <vector>
 

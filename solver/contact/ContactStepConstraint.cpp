@@ -5,13 +5,13 @@
 #include "solver/contact/ContactStepConstraint.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/assembly/MechanicalSystem.hpp"
 #include "solver/contact/ContinuousAdaptation.hpp"
 #include "solver/contact/ContinuousContactConstraint.hpp"
 #include "solver/contact/ContinuousPointContact.hpp"
 #include "solver/contact/DualContactConstraint.hpp"
 #include "solver/contact/PenaltyContactConstraint.hpp"
 #include "solver/contact/lac/LacContactConstraint.hpp"
-#include "solver/assembly/MechanicalSystem.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>

@@ -5,9 +5,9 @@
 // (see StatNonLineKeywords.hpp).
 
 #include "catalog/KeywordTree.hpp"
+#include "solver/assembly/MechanicalSystem.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/functions/InstantList.hpp"
-#include "solver/assembly/MechanicalSystem.hpp"
 #include "solver/nonlinear/NewtonDriver.hpp"
 #include "solver/nonlinear/TimeStepper.hpp"
 

@@ -4,9 +4,9 @@
 // Gauss points; EVAL_CHAM / EVAL_ELGA reductions). The column title is TITRE (its lines joined),
 // else the component, node or cell and point, or the reduction (e.g. "DY N3", "MAX SIXX").
 
+#include "solver/assembly/MechanicalSystem.hpp"
 #include "solver/nonlinear/FieldExtraction.hpp"
 #include "solver/nonlinear/IterationColumns.hpp"
-#include "solver/assembly/MechanicalSystem.hpp"
 
 #include <memory>
 #include <vector>

@@ -12,9 +12,9 @@
 // With RECH_LINEAIRE each correction is scaled by the secant line search (CORDE). Step cutting on
 // failure is left to the caller (TimeStepper).
 
+#include "solver/assembly/MechanicalSystem.hpp"
 #include "solver/nonlinear/ConvergenceVerif.hpp"
 #include "solver/nonlinear/IterationColumns.hpp"
-#include "solver/assembly/MechanicalSystem.hpp"
 #include "solver/nonlinear/PointState.hpp"
 #include "solver/nonlinear/StepConstraint.hpp"
 

@@ -3,8 +3,8 @@
 // nodes of the model; nodes outside it carry no value), SIEF_ELGA, VARI_ELGA, and the nodal
 // force fields REAC_NODA / FORC_NODA from a physical-size vector.
 
-#include "solver/database/Result.hpp"
 #include "solver/assembly/DofMap.hpp"
+#include "solver/database/Result.hpp"
 #include "solver/nonlinear/PointState.hpp"
 
 #include <Eigen/Dense>

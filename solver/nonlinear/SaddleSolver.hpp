@@ -30,9 +30,9 @@
 // words). The factorisation is kept for further right-hand sides (contact sub-iterations, line
 // search). On request, a factorize() call with the values already factorised keeps the factors.
 
-#include "solver/mesh/Mesh.hpp"
 #include "solver/assembly/DofMap.hpp"
 #include "solver/assembly/StiffnessMatrix.hpp"
+#include "solver/mesh/Mesh.hpp"
 
 #include "solver/linalg/LinearSolver.hpp"
 #include <Eigen/Sparse>

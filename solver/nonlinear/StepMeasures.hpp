@@ -8,8 +8,8 @@
 // Time_Time_Step. TABLE='OUI' attaches the table to the result (RECU_TABLE(CO=...,
 // NOM_TABLE='STAT')); UNITE writes it to that unit at the end of the command.
 
-#include "solver/database/Result.hpp"
 #include "solver/assembly/MechanicalSystem.hpp"
+#include "solver/database/Result.hpp"
 #include "solver/post/Table.hpp"
 
 #include <chrono>

@@ -15,14 +15,14 @@
 // not implemented yet. The methods are described in solver/post/DerivedFields.hpp.
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/assembly/ExternalForces.hpp"
+#include "solver/assembly/NodalForces.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/functions/RealFunction.hpp"
 #include "solver/inputs/Selection.hpp"
 #include "solver/model/ElementCharacteristics.hpp"
 #include "solver/model/MaterialField.hpp"
 #include "solver/model/Model.hpp"
-#include "solver/assembly/ExternalForces.hpp"
-#include "solver/assembly/NodalForces.hpp"
 #include "solver/nonlinear/ResultFields.hpp"
 #include "solver/nonlinear/ResultLoads.hpp"
 #include "solver/post/DerivedFields.hpp"

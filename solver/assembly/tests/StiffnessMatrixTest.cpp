@@ -3,10 +3,10 @@
 // SaddleSolver; singular stiffness found by the backends (no pre-check) and still named.
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/assembly/MechanicalSystem.hpp"
 #include "solver/fem/BoxMesh.hpp"
 #include "solver/model/ModelBuilder.hpp"
 #include "solver/nonlinear/ElasticSolve.hpp"
-#include "solver/assembly/MechanicalSystem.hpp"
 
 #include <gtest/gtest.h>
 

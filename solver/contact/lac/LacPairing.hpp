@@ -14,10 +14,10 @@
 // The weights are |dx/dxi| on the initial configuration (TYPE_JACOBIEN='INITIAL') or on the
 // current one ('ACTUALISE'); the overlaps and the gaps are always those of the current positions.
 
+#include "solver/assembly/DofMap.hpp"
 #include "solver/contact/MasterCellIndex.hpp"
 #include "solver/contact/mortar/MortarSearch.hpp"
 #include "solver/contact/mortar/MortarSegments.hpp"
-#include "solver/assembly/DofMap.hpp"
 
 #include <array>
 #include <map>

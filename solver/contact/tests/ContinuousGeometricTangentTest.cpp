@@ -9,11 +9,11 @@
 //     the same comparison without the geometric term fails by orders of magnitude (the test can fail).
 
 #include "solver/contact/ContinuousGeometricTangent.hpp"
+#include "solver/assembly/DofMap.hpp"
 #include "solver/contact/ContinuousContactConstraint.hpp"
 #include "solver/contact/tests/ContactTestMeshes.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 #include "solver/model/Model.hpp"
-#include "solver/assembly/DofMap.hpp"
 
 #include <gtest/gtest.h>
 

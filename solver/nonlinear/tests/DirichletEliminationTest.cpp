@@ -2,9 +2,9 @@
 // displacements and multipliers as the dualised system (the former path), an SPD matrix when no
 // other relation needs a multiplier, and a multiplier row kept only for the relations that need one.
 
+#include "solver/assembly/MechanicalSystem.hpp"
 #include "solver/fem/BoxMesh.hpp"
 #include "solver/model/ModelBuilder.hpp"
-#include "solver/assembly/MechanicalSystem.hpp"
 
 #include <gtest/gtest.h>
 

@@ -15,9 +15,9 @@
 //               (default: the in-place assembly into the StiffnessMatrix pattern, MECA_STATIQUE's)
 // Output: one line "key=value ..." per run.
 
+#include "solver/assembly/MechanicalSystem.hpp"
 #include "solver/fem/BoxMesh.hpp"
 #include "solver/model/ModelBuilder.hpp"
-#include "solver/assembly/MechanicalSystem.hpp"
 #include "solver/nonlinear/PhaseTimes.hpp"
 #include "solver/nonlinear/PointState.hpp"
 
