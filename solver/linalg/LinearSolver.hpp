@@ -16,6 +16,7 @@
 //               Cholesky; 'LDLT_SP' preconditioned by a single-precision MUMPS factorisation.
 // A singular matrix raises SingularMatrixError with the equation number of the null pivot.
 
+#include "solver/linalg/MumpsControls.hpp"
 #include "solver/linalg/SparseMatrix.hpp"
 
 #include <Eigen/Dense>
@@ -42,6 +43,7 @@ struct SolverOptions {
   int maxIterations = 0;                   // NMAX_ITER (GCPC); 0: the system size
   std::string preconditioner = "LDLT_INC"; // PRE_COND (GCPC): LDLT_INC or LDLT_SP
   int preconditionerReuseIterations = 30;  // REAC_PRECOND (LDLT_SP): rebuilt after a solve needing more
+  MumpsControls mumps; // GESTION_MEMOIRE, ACCELERATION, LOW_RANK_SEUIL... (MUMPS and LDLT_SP)
 };
 
 // The matrix is singular: `equation` is the null pivot's equation (-1 if the backend could not
@@ -89,6 +91,12 @@ public:
   virtual double factorisationFlops() const = 0;
   // The fill-reducing ordering the last analysis used, named as RENUM names it (AMD, METIS...).
   virtual std::string orderingUsed() const = 0;
+  // What the backend did in the last factorisation and solve, one line for the message file
+  // (MUMPS: in/out of core, full rank or BLR, flops, factor entries, memory; GCPC: iterations).
+  virtual std::string summary() const { return {}; }
+  // MUMPS's INFOG(i) (1-based) of the last operation, 0 for other backends: what the tests read
+  // to see that an option reached MUMPS.
+  virtual long long mumpsInfog(int /*i*/) const { return 0; }
 
 protected:
   explicit LinearSolver(MatrixKind k) : kind_(k) {}

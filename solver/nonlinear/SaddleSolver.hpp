@@ -56,6 +56,10 @@ public:
   const linalg::SolverOptions& options() const { return options_; }
   // "MUMPS" etc., after the first factorisation.
   std::string backendName() const;
+  // The backend's one-line account of its last factorisation and solve (empty if none).
+  std::string backendSummary() const;
+  // MUMPS's INFOG(i) of the last operation (0 for other backends or before any).
+  long long mumpsInfog(int i) const;
 
   // Factorises for the tangent K (physical block, assembled in place; `symmetric` chooses the
   // storage and K must then be stored upper or full, else full). Throws UserError SOLVE_1
