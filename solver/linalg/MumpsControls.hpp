@@ -7,12 +7,14 @@
 // on a MUMPS instance: MumpsControlsApply.hpp (included by the MUMPS backends only).
 //
 //   GESTION_MEMOIRE  IN_CORE: ICNTL(22) = 0; OUT_OF_CORE: ICNTL(22) = 1, factors written in the
-//                    run's working directory; AUTO: in core when the analysis's estimate
+//                    process's current directory; AUTO: in core when the analysis's estimate
 //                    (INFOG(17), or INFOG(36) with block low-rank) fits in the memory available
 //                    (MemAvailable, and the P memory_limit of the run), out of core otherwise.
 //   ACCELERATION     AUTO, FR: full rank, ICNTL(35) = 0; LR: block low-rank factorisation and
 //                    solve, ICNTL(35) = 2, CNTL(7) = LOW_RANK_SEUIL; LR+: LR with the
-//                    contribution blocks compressed too, ICNTL(37) = 1 (less memory).
+//                    contribution blocks compressed too, ICNTL(37) = 1 (less memory). LR and LR+
+//                    are refused by the catalogue for now (MUMPS 5.5.1's BLR clustering crashed
+//                    in SCOTCH 7, doc/fem.md): written here, not reachable from a command file.
 //   PRETRAITEMENTS   AUTO: MUMPS's permutation and scaling choice (ICNTL(6) = 7, ICNTL(8) = 77);
 //                    SANS: neither (ICNTL(6) = 0, ICNTL(8) = 0).
 //   POSTTRAITEMENTS  iterative refinement ICNTL(10): SANS 0; MINI exactly one step (-1); FORCE up
