@@ -70,6 +70,38 @@ std::shared_ptr<const MaterialField> readMaterialField(const KeywordTree& keywor
   return field;
 }
 
+namespace {
+
+// MUMPS's own options (METHODE='MUMPS', and LOW_RANK_SEUIL / GESTION_MEMOIRE of GCPC's LDLT_SP
+// preconditioner); the catalogue refuses the values not implemented.
+linalg::MumpsControls readMumpsControls(const KeywordTree& s, linalg::SolverMethod method) {
+  linalg::MumpsControls c;
+  if (s.has("GESTION_MEMOIRE")) {
+    c.memory = s.text("GESTION_MEMOIRE");
+  }
+  if (s.has("ACCELERATION")) {
+    c.acceleration = s.text("ACCELERATION");
+  }
+  if (s.has("PRETRAITEMENTS")) {
+    c.preprocessing = s.text("PRETRAITEMENTS");
+  }
+  if (s.has("POSTTRAITEMENTS")) {
+    c.postprocessing = s.text("POSTTRAITEMENTS");
+  }
+  if (method == linalg::SolverMethod::Mumps && s.has("RESI_RELA")) {
+    c.backwardErrorLimit = s.real("RESI_RELA");
+  }
+  if (s.has("LOW_RANK_SEUIL")) { // only under ACCELERATION='LR'/'LR+' (MUMPS) or LDLT_SP (GCPC)
+    c.lowRankThreshold = s.real("LOW_RANK_SEUIL");
+    if (method == linalg::SolverMethod::Gcpc && c.lowRankThreshold > 0.0) {
+      c.acceleration = "LR"; // LDLT_SP: a threshold is the request for a low-rank preconditioner
+    }
+  }
+  return c;
+}
+
+} // namespace
+
 linalg::SolverOptions readSolverOptions(const KeywordTree& keywords) {
   linalg::SolverOptions o;
   if (!keywords.has("SOLVEUR")) {
@@ -102,7 +134,7 @@ linalg::SolverOptions readSolverOptions(const KeywordTree& keywords) {
   if (!iterative) { // STOP_SINGULIER: the direct solvers' blocks only
     o.stopIfSingular = s.text("STOP_SINGULIER") == "OUI";
   }
-  if (s.has("RESI_RELA") && s.real("RESI_RELA") > 0.0) {
+  if (iterative && s.has("RESI_RELA") && s.real("RESI_RELA") > 0.0) { // MUMPS's: MumpsControls
     o.relativeResidual = s.real("RESI_RELA");
   }
   if (s.has("NMAX_ITER")) {
@@ -126,6 +158,7 @@ linalg::SolverOptions readSolverOptions(const KeywordTree& keywords) {
   if (s.has("REAC_PRECOND")) { // GCPC, LDLT_SP
     o.preconditionerReuseIterations = static_cast<int>(s.integer("REAC_PRECOND"));
   }
+  o.mumps = readMumpsControls(s, o.method);
   return o;
 }
 

@@ -41,6 +41,11 @@ public:
   std::string_view backendName() const override { return "GCPC"; }
   double factorisationFlops() const override { return 0.0; } // incomplete Cholesky: not counted
   std::string orderingUsed() const override { return "none"; }
+  std::string summary() const override {
+    return lastIterations_ > 0
+               ? std::to_string(lastIterations_) + " conjugate gradient iterations (incomplete Cholesky)"
+               : "";
+  }
 
   void analyse(const SparseMatrix& a) override {
     if (a.storage() != Storage::Upper) {
@@ -77,7 +82,7 @@ private:
     }
   }
 
-  template <class Solver> static void solveWith(Solver& solver, Eigen::Ref<Eigen::MatrixXd> rhs) {
+  template <class Solver> void solveWith(Solver& solver, Eigen::Ref<Eigen::MatrixXd> rhs) {
     for (Eigen::Index c = 0; c < rhs.cols(); ++c) {
       const Eigen::VectorXd b = rhs.col(c);
       const Eigen::VectorXd x = solver.solve(b);
@@ -86,6 +91,7 @@ private:
                                 " iterations (relative residual " + std::to_string(solver.error()) + ")");
       }
       rhs.col(c) = x;
+      lastIterations_ = static_cast<int>(solver.iterations());
     }
   }
 
@@ -95,6 +101,7 @@ private:
   }
 
   SolverOptions options_;
+  int lastIterations_ = 0;
   std::vector<int> outer_;
   Matrix matrix_;
   // RENUM: 'RCMK' (the catalogue's, code_aster's) or AMD (Eigen's default, for other callers)

@@ -20,6 +20,7 @@
 //               FGMRES or GCR; the multigrids get the rigid-body modes (setNodeCoordinates).
 // A singular matrix raises SingularMatrixError with the equation number of the null pivot.
 
+#include "solver/linalg/MumpsControls.hpp"
 #include "solver/linalg/SparseMatrix.hpp"
 
 #include <Eigen/Dense>
@@ -51,6 +52,7 @@ struct SolverOptions {
   int fillLevel = 0;                       // NIVE_REMPLISSAGE (PETSC, LDLT_INC)
   double fill = 1.0;                       // REMPLISSAGE (PETSC, LDLT_INC)
   std::string petscOptions;                // OPTION_PETSC: PETSc options database string
+  MumpsControls mumps; // GESTION_MEMOIRE, ACCELERATION, LOW_RANK_SEUIL... (MUMPS and LDLT_SP)
 };
 
 // Whether this build has the PETSc worker (METHODE='PETSC'); false: refused at the keyword.
@@ -114,6 +116,12 @@ public:
   // Peak resident memory (MB) of a process the backend runs in (PETSC's worker), 0 if none: the
   // job's own peak memory does not include it.
   virtual double workerPeakMegabytes() const { return 0.0; }
+  // What the backend did in the last factorisation and solve, one line for the message file
+  // (MUMPS: in/out of core, full rank or BLR, flops, factor entries, memory; GCPC: iterations).
+  virtual std::string summary() const { return {}; }
+  // MUMPS's INFOG(i) (1-based) of the last operation, 0 for other backends: what the tests read
+  // to see that an option reached MUMPS.
+  virtual long long mumpsInfog(int /*i*/) const { return 0; }
 
 protected:
   explicit LinearSolver(MatrixKind k) : kind_(k) {}

@@ -1,6 +1,7 @@
 // MUMPS backend (sequential library, double precision C interface).
 
 #include "solver/linalg/Backends.hpp"
+#include "solver/linalg/MumpsControlsApply.hpp"
 #include "solver/linalg/MumpsCoordinates.hpp"
 
 #include <dmumps_c.h>
@@ -80,6 +81,7 @@ public:
     // that is exactly zero (INFOG(1) = -10)
     id_.icntl[23] = o.nprec >= 0 ? 1 : 0;
     id_.cntl[2] = o.nprec >= 0 ? std::pow(10.0, -o.nprec) : 0.0;
+    applyMumpsControls(id_, o.mumps); // GESTION_MEMOIRE, ACCELERATION, POSTTRAITEMENTS...
     initialised_ = true;
   }
   ~MumpsSolver() override {
@@ -94,6 +96,8 @@ public:
   std::string_view backendName() const override { return "MUMPS"; }
   double factorisationFlops() const override { return factorised_ ? id_.rinfog[2] : 0.0; } // RINFOG(3)
   std::string orderingUsed() const override { return orderingName(id_.infog[6]); }         // INFOG(7)
+  std::string summary() const override { return factorised_ ? mumpsSummary(id_, options_.mumps) : ""; }
+  long long mumpsInfog(int i) const override { return id_.infog[i - 1]; }
 
   void analyse(const SparseMatrix& a) override {
     if (a.storage() != storageFor(kind())) {
@@ -112,6 +116,7 @@ public:
     id_.job = jobAnalyse;
     dmumps_c(&id_);
     check("analysis");
+    chooseMumpsMemory(id_, options_.mumps);
   }
 
   void factorise(const SparseMatrix& a) override {
@@ -156,6 +161,7 @@ public:
     id_.job = jobSolve;
     dmumps_c(&id_);
     check("solution");
+    checkBackwardError();
     rhs = b;
   }
 
@@ -204,6 +210,17 @@ private:
     id_.irhs_ptr = nullptr;
     check("solution (sparse right-hand sides)");
     rhs = x;
+  }
+
+  // RESI_RELA > 0: the componentwise backward errors of the solve (ICNTL(11) = 2) must not exceed it.
+  void checkBackwardError() const {
+    const double limit = options_.mumps.backwardErrorLimit;
+    const double error = id_.rinfog[6] + id_.rinfog[7]; // RINFOG(7) + RINFOG(8)
+    if (limit > 0.0 && id_.nrhs == 1 && !(error <= limit)) {
+      throw LinearSolverError(
+          "MUMPS: the backward error of the solution, " + fmtReal(error) + ", exceeds RESI_RELA = " +
+          fmtReal(limit) + " (try POSTTRAITEMENTS='FORCE', a smaller LOW_RANK_SEUIL or ACCELERATION='FR')");
+    }
   }
 
   void check(const char* phase) const {

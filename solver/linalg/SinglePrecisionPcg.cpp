@@ -5,6 +5,7 @@
 // rebuilds it (code_aster's REAC_PRECOND). Symmetric positive definite matrices only.
 
 #include "solver/linalg/Backends.hpp"
+#include "solver/linalg/MumpsControlsApply.hpp"
 #include "solver/linalg/MumpsCoordinates.hpp"
 
 #include <smumps_c.h>
@@ -42,6 +43,9 @@ public:
     }
     id_.icntl[6] = 7;                                              // ICNTL(7): MUMPS's choice
     id_.icntl[13] = static_cast<int>(std::lround(o.pivotPercent)); // ICNTL(14) = PCENT_PIVOT
+    applyMumpsControls(id_, o.mumps); // LOW_RANK_SEUIL (block low-rank preconditioner)
+    id_.icntl[9] = 0;                 // no iterative refinement of the preconditioner
+    id_.icntl[10] = 0;
   }
   ~SinglePrecisionPcg() override {
     if (initialised_) {
@@ -55,6 +59,13 @@ public:
   std::string_view backendName() const override { return "GCPC (LDLT_SP)"; }
   double factorisationFlops() const override { return factorisations_ > 0 ? id_.rinfog[2] : 0.0; }
   std::string orderingUsed() const override { return "none"; }
+  std::string summary() const override {
+    return factorisations_ > 0
+               ? "preconditioner " + mumpsSummary(id_, options_.mumps) + " (single precision), " +
+                     std::to_string(lastIterations_) + " conjugate gradient iterations"
+               : "";
+  }
+  long long mumpsInfog(int i) const override { return id_.infog[i - 1]; }
   int preconditionerFactorisations() const { return factorisations_; }
 
   void analyse(const SparseMatrix& a) override {
@@ -71,6 +82,7 @@ public:
     id_.job = jobAnalyse;
     smumps_c(&id_);
     check("analysis");
+    chooseMumpsMemory(id_, options_.mumps);
     rebuild_ = true;
   }
 
@@ -139,6 +151,7 @@ private:
       x += alpha * p;
       r -= alpha * q;
       if (r.norm() <= options_.relativeResidual * bNorm) {
+        lastIterations_ = k;
         rebuild_ = rebuild_ || k > options_.preconditionerReuseIterations;
         return x;
       }
@@ -164,6 +177,7 @@ private:
   bool initialised_ = false;
   bool rebuild_ = true;
   int factorisations_ = 0;
+  int lastIterations_ = 0;
   std::optional<SparseMatrix> matrix_; // the matrix of the last factorisation (CG's operator)
   std::vector<MUMPS_INT> irn_, jcn_;
   std::vector<float> values_;

@@ -29,7 +29,7 @@ struct PhaseTimes {
 double peakResidentMegabytes();
 
 // "   phases (s): numbering 0.012, assembly 0.350, ..." lines for the message file.
-std::string formatPhases(const PhaseTimes& t, int analyses);
+std::string formatPhases(const PhaseTimes& t, int analyses, std::size_t equations = 0);
 
 // Adds the seconds elapsed since its construction to a counter when destroyed.
 class PhaseClock {

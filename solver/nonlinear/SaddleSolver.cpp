@@ -97,6 +97,14 @@ std::string SaddleSolver::backendName() const {
   return solver_ ? std::string(solver_->backendName()) : std::string("-");
 }
 
+std::string SaddleSolver::backendSummary() const {
+  return solver_ ? solver_->summary() : std::string();
+}
+
+long long SaddleSolver::mumpsInfog(int i) const {
+  return solver_ ? solver_->mumpsInfog(i) : 0;
+}
+
 void SaddleSolver::chooseCondensedRelations(const std::vector<std::vector<std::pair<int, double>>>& merged) {
   const int n = dofs_.physicalCount();
   removed_ = eliminated_;

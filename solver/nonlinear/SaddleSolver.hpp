@@ -60,6 +60,10 @@ public:
   int lastIterations() const { return solver_ ? solver_->lastIterations() : 0; }
   // Peak memory (MB) of the backend's worker process (PETSC), 0 if none.
   double workerPeakMegabytes() const { return solver_ ? solver_->workerPeakMegabytes() : 0.0; }
+  // The backend's one-line account of its last factorisation and solve (empty if none).
+  std::string backendSummary() const;
+  // MUMPS's INFOG(i) of the last operation (0 for other backends or before any).
+  long long mumpsInfog(int i) const;
 
   // Factorises for the tangent K (physical block, assembled in place; `symmetric` chooses the
   // storage and K must then be stored upper or full, else full). Throws UserError SOLVE_1

@@ -99,7 +99,10 @@ Value runMecaStatique(OperatorCall& call) {
     msg << fmt::format("   stored NUME_ORDRE {} at INST {}: max |u| = {:.6e}\n", step.number, t,
                        s.displacement.size() ? s.displacement.cwiseAbs().maxCoeff() : 0.0);
   }
-  msg << formatPhases(system.phaseTimes(), system.solver().timings().analyses);
+  if (const std::string summary = system.solver().backendSummary(); !summary.empty()) {
+    msg << "   solver summary: " << summary << "\n";
+  }
+  msg << formatPhases(system.phaseTimes(), system.solver().timings().analyses, system.dofs().size());
   rememberLoads(result, excitations);
   rememberCharacteristics(result, cara);
   return call.makeConcept(result);

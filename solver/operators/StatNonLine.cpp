@@ -296,7 +296,10 @@ Value runStatNonLine(OperatorCall& call) {
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - commandStart).count();
     phases.other = std::max(0.0, elapsed - phases.total());
-    msg << formatPhases(phases, system.solver().timings().analyses);
+    if (const std::string summary = system.solver().backendSummary(); !summary.empty()) {
+      msg << "   solver summary (last solve): " << summary << "\n";
+    }
+    msg << formatPhases(phases, system.solver().timings().analyses, system.dofs().size());
     msg << effectCosts(phases, system, driver, constraint.get());
   }
   if (!run.completed) {

@@ -9,6 +9,7 @@
 #include "solver/fem/ElementMatrices.hpp"
 #include "solver/linalg/BlasThreads.hpp"
 #include "solver/linalg/LinearSolver.hpp"
+#include "solver/linalg/tests/CubeSystem.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,70 +20,6 @@
 
 namespace stella::linalg {
 namespace {
-
-// HEXA8 cube 4 x 3 x 3, face x = 0 clamped (by elimination, or by Lagrange multipliers), a
-// load in y and z on x = 1.
-struct Cube {
-  fem::PlainMesh mesh = fem::boxMesh(CellType::HEXA8, {4, 3, 3}, {1.0, 0.8, 0.6});
-  std::vector<std::int64_t> offsets;
-  DofNumbering numbering{mesh.nodeCount(), 3};
-  SparseMatrix k;
-  Eigen::VectorXd f;
-
-  explicit Cube(bool lagrange) {
-    for (int c = 0; c <= mesh.cellCount(); ++c) {
-      offsets.push_back(static_cast<std::int64_t>(c) * mesh.nodesPerCell());
-    }
-    std::vector<std::pair<int, int>> couplings;
-    std::vector<int> blocked;
-    for (int a = 0; a < mesh.nodeCount(); ++a) {
-      for (int c = 0; c < 3 && mesh.coordinates(a, 0) < 1e-12; ++c) {
-        if (lagrange) {
-          couplings.emplace_back(numbering.addLagrange(Component::LAGR, a, static_cast<Component>(c)),
-                                 numbering.dof(a, c));
-        } else {
-          blocked.push_back(numbering.dof(a, c));
-        }
-      }
-    }
-    const CellList cells{mesh.connectivity, offsets};
-    auto pattern = buildPattern(numbering, cells, couplings, Storage::Upper);
-    k = SparseMatrix(pattern);
-    const ElementScatter scatter(*pattern, numbering, cells);
-    const Eigen::MatrixXd d = behaviour::elasticMatrix(fem::Modelling::ThreeD, {210000.0, 0.3});
-    fem::ElementKinematics kin;
-    Eigen::MatrixXd ke, x(8, 3);
-    for (int e = 0; e < mesh.cellCount(); ++e) {
-      for (int a = 0; a < 8; ++a) {
-        x.row(a) = mesh.coordinates.row(mesh.cell(e)[a]);
-      }
-      fem::computeKinematics(CellType::HEXA8, fem::Modelling::ThreeD, x, kin);
-      fem::stiffness(kin, d, ke);
-      scatter.add(e, ke, k.values());
-    }
-    for (const auto& [l, dof] : couplings) {
-      k.add(std::min(l, dof), std::max(l, dof), 1.0);
-    }
-    for (int b : blocked) {
-      for (int i = 0; i < pattern->size; ++i) {
-        for (auto p = pattern->rowStart[static_cast<std::size_t>(i)];
-             p < pattern->rowStart[static_cast<std::size_t>(i) + 1]; ++p) {
-          const int j = pattern->columns[static_cast<std::size_t>(p)];
-          if (i == b || j == b) {
-            k.values()[static_cast<std::size_t>(p)] = i == j ? 1.0 : 0.0;
-          }
-        }
-      }
-    }
-    f = Eigen::VectorXd::Zero(numbering.dofCount());
-    for (int a = 0; a < mesh.nodeCount(); ++a) {
-      if (mesh.coordinates(a, 0) > 1.0 - 1e-12) {
-        f[numbering.dof(a, 1)] = 100.0;
-        f[numbering.dof(a, 2)] = -50.0;
-      }
-    }
-  }
-};
 
 struct Case {
   SolverMethod method;

@@ -5,23 +5,28 @@
 # under /usr/bin/time -v for the peak memory. Prints one "key=value ..." line: the phase times
 # and the peak memory the message file reports, the job's elapsed time and maximum RSS.
 #
-#   run-stella-bench.sh STELLA CASE N METHODE WORKDIR
+#   run-stella-bench.sh STELLA CASE N METHODE WORKDIR [EXTRA [LABEL]]
 #     CASE     hexa8 | tetra10 | quad4 | quad8 (see make-box-mesh.py)
 #     METHODE  MUMPS | MULT_FRONT | LDLT | GCPC | PETSC_GAMG | PETSC_BOOMER (PETSC: ALGORITHME='CG',
 #              PRE_COND='GAMG' or 'BOOMER', RESI_RELA=1e-8; iterations= in the output line)
+#     EXTRA    more SOLVEUR keywords, e.g. "ACCELERATION='FR'" or
+#              "PRE_COND='LDLT_SP', RESI_RELA=1e-8"; LABEL names the study's files (default METHODE)
+#   MEMORY_LIMIT=MiB in the environment adds "P memory_limit" to the export.
 set -euo pipefail
 stella=$1
 case_name=$2
 n=$3
 method=$4
 work=$5
+extra=${6:-}
+label=${7:-$method}
 here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$work"
 mesh="$work/${case_name}_${n}.msh"
 if [[ ! -s $mesh ]]; then
   /usr/bin/python3 "$here/make-box-mesh.py" "$case_name" "$n" "$mesh"
 fi
-study="$work/${case_name}_${n}_${method}"
+study="$work/${case_name}_${n}_${label}"
 case $method in
   PETSC_GAMG | PETSC_BOOMER) solveur="METHODE='PETSC', ALGORITHME='CG', PRE_COND='${method#PETSC_}', RESI_RELA=1.0e-8" ;;
   *) solveur="METHODE='$method'" ;;
@@ -47,7 +52,7 @@ CM = AFFE_MATERIAU(MAILLAGE=M, AFFE=_F(TOUT='OUI', MATER=ACIER))
 BLOC = AFFE_CHAR_CINE(MODELE=MO, MECA_IMPO=_F(GROUP_MA='XMIN', $fixed))
 CHARGE = AFFE_CHAR_MECA(MODELE=MO, $load)
 RESU = MECA_STATIQUE(MODELE=MO, CHAM_MATER=CM, EXCIT=(_F(CHARGE=BLOC), _F(CHARGE=CHARGE)),
-                     SOLVEUR=_F($solveur))
+                     SOLVEUR=_F($solveur${extra:+, $extra}))
 FIN()
 EOF
 cat > "$study.export" << EOF
@@ -56,6 +61,9 @@ F comm $(basename "$study").comm D 1
 F msh $(basename "$mesh") D 20
 F mess $(basename "$study").mess R 6
 EOF
+if [[ -n ${MEMORY_LIMIT:-} ]]; then
+  echo "P memory_limit $MEMORY_LIMIT" >> "$study.export"
+fi
 /usr/bin/time -v -o "$study.time" "$stella" run "$study.export" --quiet --work-dir "$study.work" \
   --output-dir "$work" > /dev/null 2>&1 || true
 mess="$study.mess"
@@ -70,8 +78,12 @@ wall=$(grep "Elapsed (wall clock)" "$study.time" | awk '{print $NF}')
 rss=$(grep "Maximum resident set size" "$study.time" | awk '{print $NF}')
 cpu=$(awk -F': ' '/User time|System time/ {s += $2} END {printf "%.1f", s}' "$study.time")
 maxu=$(grep -m1 "max |u|" "$mess" | sed -E 's/.*max \|u\| = ([-0-9.e+]+).*/\1/')
-iterations=$(grep -m1 "iterative solver:" "$mess" | sed -E 's/.*iterative solver: ([0-9]+) .*/\1/' || true)
-echo "case=$case_name n=$n solver=$method backend=$backend dofs=$dofs numbering=$(num numbering)" \
+iterations=$( (grep -m1 -oE "[0-9]+ conjugate gradient iterations" "$mess" || true) | awk '{print $1}')
+if [[ -z $iterations ]]; then
+  iterations=$( (grep -m1 "iterative solver:" "$mess" || true) | sed -E 's/.*iterative solver: ([0-9]+) .*/\1/')
+fi
+summary=$( (grep -m1 "solver summary:" "$mess" || true) | sed -E 's/.*solver summary: //; s/ /_/g')
+echo "case=$case_name n=$n solver=$label backend=$backend dofs=$dofs numbering=$(num numbering)" \
   "assembly=$(num assembly) factorisation=$(num factorisation) solve=$(num solve) post=$(num post)" \
   "total=$(num total) peak_mb=$peak meca_statique=$mecaTime lire_maillage=$readTime job_wall=$wall" \
-  "max_rss_kb=$rss cpu_s=$cpu max_u=$maxu iterations=${iterations:-0}"
+  "max_rss_kb=$rss cpu_s=$cpu max_u=$maxu iterations=${iterations:-0} summary=${summary:--}"
