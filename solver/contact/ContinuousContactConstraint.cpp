@@ -4,6 +4,7 @@
 #include "solver/contact/ContinuousContactConstraint.hpp"
 #include "solver/contact/ContactResultField.hpp"
 #include "solver/contact/ContinuousIntegrationRule.hpp"
+#include "solver/contact/MultiplierSchur.hpp"
 
 #include "solver/database/Result.hpp"
 #include "solver/fem/Quadrature.hpp"
@@ -398,28 +399,9 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
     }
     rhs(i) = (c.tangent >= 0 ? slip(c.row, c.tangent) : g(c.row)) + bdu;
   }
-  Eigen::VectorXd y;
-  if (symmetricSchur) {
-    const Eigen::LDLT<Eigen::MatrixXd> ldlt(0.5 * (s + s.transpose()));
-    const Eigen::VectorXd d = ldlt.vectorD();
-    const double scale = d.cwiseAbs().maxCoeff();
-    for (Eigen::Index p = 0; p < mc; ++p) {
-      if (!(std::fabs(d(p)) > 1e-12 * scale)) {
-        const Eigen::PermutationMatrix<Eigen::Dynamic> perm(ldlt.transpositionsP());
-        const Eigen::PermutationMatrix<Eigen::Dynamic> inverse(perm.inverse());
-        redundant(contact[static_cast<std::size_t>(inverse.indices()(p))].row);
-      }
-    }
-    y = ldlt.solve(rhs); // w dlambda
-  } else {
-    // ALGO_RESO_FROT='NEWTON' with sliding nodes: the only non-symmetric factorisation (dense, of
-    // the multipliers in contact); K itself stays symmetric.
-    const Eigen::FullPivLU<Eigen::MatrixXd> lu(s);
-    if (!lu.isInvertible()) {
-      redundant(contact.front().row);
-    }
-    y = lu.solve(rhs);
-  }
+  // w dlambda; non-symmetric with ALGO_RESO_FROT='NEWTON' and sliding nodes
+  const Eigen::VectorXd y = solveMultiplierSchur(
+      s, rhs, symmetricSchur, [&](Eigen::Index i) { redundant(contact[static_cast<std::size_t>(i)].row); });
   Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
   for (Eigen::Index j = 0; j < mc; ++j) {
     const Multiplier& c = contact[static_cast<std::size_t>(j)];
