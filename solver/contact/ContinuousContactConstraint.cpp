@@ -536,24 +536,11 @@ void ContinuousContactConstraint::accepted(const std::vector<LinkState>& rowStat
 
 void ContinuousContactConstraint::store(ResultStep& step) const {
   ContactConstraint::store(step);
-  auto found = step.fields.find("DEPL");
-  if (found == step.fields.end() || found->second == nullptr) {
+  const std::size_t directions = !friction() ? 0 : rows_.friction.T2.rows() > 0 ? 2 : 1;
+  const auto [out, c0] = multiplierDepl(step, directions);
+  if (out == nullptr) {
     return;
   }
-  const Field& depl = *found->second;
-  if (depl.componentIndex("LAGS_C")) {
-    return;
-  }
-  std::vector<std::string> extra;
-  extra.push_back("LAGS_C");
-  if (friction()) {
-    extra.push_back("LAGS_F1");
-    if (rows_.friction.T2.rows() > 0) {
-      extra.push_back("LAGS_F2");
-    }
-  }
-  const std::size_t c0 = depl.componentCount();
-  const auto out = withMultiplierComponents(depl, extra);
   for (std::size_t k = 0; k < links_.size(); ++k) {
     if (!resolvedZone_[static_cast<std::size_t>(links_[k].zone)]) {
       continue;

@@ -494,21 +494,10 @@ std::string ContinuousPointContactConstraint::continuationNote() const {
 
 void ContinuousPointContactConstraint::store(ResultStep& step) const {
   ContactConstraint::store(step);
-  auto found = step.fields.find("DEPL");
-  if (found == step.fields.end() || found->second == nullptr) {
+  const auto [out, c0] = multiplierDepl(step, friction() ? 1 : 0);
+  if (out == nullptr) {
     return;
   }
-  const Field& depl = *found->second;
-  if (depl.componentIndex("LAGS_C")) {
-    return;
-  }
-  std::vector<std::string> extra;
-  extra.push_back("LAGS_C");
-  if (friction()) {
-    extra.push_back("LAGS_F1");
-  }
-  const std::size_t c0 = depl.componentCount();
-  const auto out = withMultiplierComponents(depl, extra);
   for (std::size_t i = 0; i < multiplierNode_.size(); ++i) {
     const auto n = static_cast<std::size_t>(multiplierNode_[i]);
     out->value(n, c0) = lambda_[i];
