@@ -409,13 +409,7 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
     const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(c.row)]);
     (c.tangent >= 0 ? lagsF_[k](c.tangent) : lagsC_[k]) += y(j) / weight_(c.row);
   }
-  Eigen::VectorXd dx;
-  Eigen::VectorXd dy;
-  solver.solve(f, Eigen::VectorXd::Zero(dlambda.size()), Eigen::VectorXd::Zero(n), dx, dy);
-  ddu -= dx;
-  if (dy.size() == dlambda.size()) {
-    dlambda -= dy;
-  }
+  applyMultiplierForces(f, ddu, dlambda, solver);
   updateSlidingPressures(u, ddu, status, sliding); // the sliding multipliers' Newton update
 }
 

@@ -298,13 +298,7 @@ void ContinuousPointContactConstraint::correct(const Eigen::VectorXd& u, Eigen::
   if (!any) {
     return;
   }
-  Eigen::VectorXd dx;
-  Eigen::VectorXd dy;
-  solver.solve(f, Eigen::VectorXd::Zero(dlambda.size()), Eigen::VectorXd::Zero(n), dx, dy);
-  ddu -= dx;
-  if (dy.size() == dlambda.size()) {
-    dlambda -= dy;
-  }
+  applyMultiplierForces(f, ddu, dlambda, solver);
 }
 
 void ContinuousPointContactConstraint::redundant(int multiplier) const {

@@ -2,6 +2,8 @@
 
 #include "solver/contact/MultiplierSchur.hpp"
 
+#include "solver/nonlinear/SaddleSolver.hpp"
+
 #include <Eigen/Dense>
 #include <cmath>
 #include <stdexcept>
@@ -31,6 +33,17 @@ Eigen::VectorXd solveMultiplierSchur(const Eigen::MatrixXd& s, const Eigen::Vect
     }
   }
   return ldlt.solve(rhs);
+}
+
+void applyMultiplierForces(const Eigen::VectorXd& f, Eigen::VectorXd& ddu, Eigen::VectorXd& dlambda,
+                           SaddleSolver& solver) {
+  Eigen::VectorXd dx;
+  Eigen::VectorXd dy;
+  solver.solve(f, Eigen::VectorXd::Zero(dlambda.size()), Eigen::VectorXd::Zero(ddu.size()), dx, dy);
+  ddu -= dx;
+  if (dy.size() == dlambda.size()) {
+    dlambda -= dy;
+  }
 }
 
 } // namespace stella::contact

@@ -6,6 +6,10 @@
 
 #include <functional>
 
+namespace stella {
+class SaddleSolver;
+} // namespace stella
+
 namespace stella::contact {
 
 // Solves s y = rhs for the multipliers' unknowns. Symmetric: the LDLT of the symmetric part of s, a
@@ -14,5 +18,11 @@ namespace stella::contact {
 // `redundant` reports the redundant unknown and must not return (it throws CONTACT_11).
 Eigen::VectorXd solveMultiplierSchur(const Eigen::MatrixXd& s, const Eigen::VectorXd& rhs, bool symmetric,
                                      const std::function<void(Eigen::Index)>& redundant);
+
+// After the multipliers' update: the structure's correction ddu -= K^-1 f, f the multipliers'
+// force columns times their increments, through the driver's factorisation (and dlambda, the
+// driver's own multipliers, corrected alike).
+void applyMultiplierForces(const Eigen::VectorXd& f, Eigen::VectorXd& ddu, Eigen::VectorXd& dlambda,
+                           SaddleSolver& solver);
 
 } // namespace stella::contact

@@ -105,13 +105,7 @@ void LacContactConstraint::applyMultipliers(const Eigen::VectorXd& y, Eigen::Vec
       lagsC_[r.patch] += y(jj) / length;
     }
   }
-  Eigen::VectorXd dx;
-  Eigen::VectorXd dy;
-  solver.solve(f, Eigen::VectorXd::Zero(dlambda.size()), Eigen::VectorXd::Zero(n), dx, dy);
-  ddu -= dx;
-  if (dy.size() == dlambda.size()) {
-    dlambda -= dy;
-  }
+  applyMultiplierForces(f, ddu, dlambda, solver);
 }
 
 } // namespace stella::contact::lac
