@@ -2,6 +2,7 @@
 
 #include "solver/contact/ContactResultField.hpp"
 
+#include "solver/database/Result.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 
 #include <cmath>
@@ -95,6 +96,26 @@ std::shared_ptr<Field> withMultiplierComponents(const Field& depl, const std::ve
     }
   }
   return out;
+}
+
+MultiplierDepl multiplierDepl(const ResultStep& step, std::size_t frictionDirections) {
+  const auto found = step.fields.find("DEPL");
+  if (found == step.fields.end() || found->second == nullptr) {
+    return {};
+  }
+  const Field& depl = *found->second;
+  if (depl.componentIndex("LAGS_C")) {
+    return {};
+  }
+  std::vector<std::string> extra;
+  extra.push_back("LAGS_C");
+  if (frictionDirections >= 1) {
+    extra.push_back("LAGS_F1");
+  }
+  if (frictionDirections >= 2) {
+    extra.push_back("LAGS_F2");
+  }
+  return {withMultiplierComponents(depl, extra), depl.componentCount()};
 }
 
 } // namespace stella::contact

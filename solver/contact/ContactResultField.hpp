@@ -22,6 +22,10 @@
 #include <memory>
 #include <vector>
 
+namespace stella {
+struct ResultStep;
+} // namespace stella
+
 namespace stella::contact {
 
 // The state of one link at the end of a step.
@@ -46,5 +50,14 @@ std::vector<LinkState> measuredGaps(const std::vector<ContactLink>& links);
 // DEPL with the multiplier components `extra` appended (LAGS_C, LAGS_F1...), undefined until the
 // caller fills them: the displacement values and their support copied, the field partial.
 std::shared_ptr<Field> withMultiplierComponents(const Field& depl, const std::vector<std::string>& extra);
+
+// The DEPL of `step` with LAGS_C appended, and with friction LAGS_F1 (and LAGS_F2 for two friction
+// directions) after it (withMultiplierComponents): LAGS_C at component `first`, to be filled and
+// stored back as DEPL. No field when the step has no DEPL or its DEPL already has LAGS_C.
+struct MultiplierDepl {
+  std::shared_ptr<Field> field;
+  std::size_t first = 0;
+};
+MultiplierDepl multiplierDepl(const ResultStep& step, std::size_t frictionDirections);
 
 } // namespace stella::contact

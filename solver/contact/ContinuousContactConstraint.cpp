@@ -4,6 +4,7 @@
 #include "solver/contact/ContinuousContactConstraint.hpp"
 #include "solver/contact/ContactResultField.hpp"
 #include "solver/contact/ContinuousIntegrationRule.hpp"
+#include "solver/contact/MultiplierSchur.hpp"
 
 #include "solver/database/Result.hpp"
 #include "solver/fem/Quadrature.hpp"
@@ -398,28 +399,9 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
     }
     rhs(i) = (c.tangent >= 0 ? slip(c.row, c.tangent) : g(c.row)) + bdu;
   }
-  Eigen::VectorXd y;
-  if (symmetricSchur) {
-    const Eigen::LDLT<Eigen::MatrixXd> ldlt(0.5 * (s + s.transpose()));
-    const Eigen::VectorXd d = ldlt.vectorD();
-    const double scale = d.cwiseAbs().maxCoeff();
-    for (Eigen::Index p = 0; p < mc; ++p) {
-      if (!(std::fabs(d(p)) > 1e-12 * scale)) {
-        const Eigen::PermutationMatrix<Eigen::Dynamic> perm(ldlt.transpositionsP());
-        const Eigen::PermutationMatrix<Eigen::Dynamic> inverse(perm.inverse());
-        redundant(contact[static_cast<std::size_t>(inverse.indices()(p))].row);
-      }
-    }
-    y = ldlt.solve(rhs); // w dlambda
-  } else {
-    // ALGO_RESO_FROT='NEWTON' with sliding nodes: the only non-symmetric factorisation (dense, of
-    // the multipliers in contact); K itself stays symmetric.
-    const Eigen::FullPivLU<Eigen::MatrixXd> lu(s);
-    if (!lu.isInvertible()) {
-      redundant(contact.front().row);
-    }
-    y = lu.solve(rhs);
-  }
+  // w dlambda; non-symmetric with ALGO_RESO_FROT='NEWTON' and sliding nodes
+  const Eigen::VectorXd y = solveMultiplierSchur(
+      s, rhs, symmetricSchur, [&](Eigen::Index i) { redundant(contact[static_cast<std::size_t>(i)].row); });
   Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
   for (Eigen::Index j = 0; j < mc; ++j) {
     const Multiplier& c = contact[static_cast<std::size_t>(j)];
@@ -427,13 +409,7 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
     const auto k = static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(c.row)]);
     (c.tangent >= 0 ? lagsF_[k](c.tangent) : lagsC_[k]) += y(j) / weight_(c.row);
   }
-  Eigen::VectorXd dx;
-  Eigen::VectorXd dy;
-  solver.solve(f, Eigen::VectorXd::Zero(dlambda.size()), Eigen::VectorXd::Zero(n), dx, dy);
-  ddu -= dx;
-  if (dy.size() == dlambda.size()) {
-    dlambda -= dy;
-  }
+  applyMultiplierForces(f, ddu, dlambda, solver);
   updateSlidingPressures(u, ddu, status, sliding); // the sliding multipliers' Newton update
 }
 
@@ -554,24 +530,11 @@ void ContinuousContactConstraint::accepted(const std::vector<LinkState>& rowStat
 
 void ContinuousContactConstraint::store(ResultStep& step) const {
   ContactConstraint::store(step);
-  auto found = step.fields.find("DEPL");
-  if (found == step.fields.end() || found->second == nullptr) {
+  const std::size_t directions = !friction() ? 0 : rows_.friction.T2.rows() > 0 ? 2 : 1;
+  const auto [out, c0] = multiplierDepl(step, directions);
+  if (out == nullptr) {
     return;
   }
-  const Field& depl = *found->second;
-  if (depl.componentIndex("LAGS_C")) {
-    return;
-  }
-  std::vector<std::string> extra;
-  extra.push_back("LAGS_C");
-  if (friction()) {
-    extra.push_back("LAGS_F1");
-    if (rows_.friction.T2.rows() > 0) {
-      extra.push_back("LAGS_F2");
-    }
-  }
-  const std::size_t c0 = depl.componentCount();
-  const auto out = withMultiplierComponents(depl, extra);
   for (std::size_t k = 0; k < links_.size(); ++k) {
     if (!resolvedZone_[static_cast<std::size_t>(links_[k].zone)]) {
       continue;

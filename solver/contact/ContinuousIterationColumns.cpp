@@ -16,6 +16,9 @@
 #include "solver/contact/ContinuousPointContact.hpp"
 
 #include <fmt/format.h>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace stella::contact {
 namespace {
@@ -49,50 +52,52 @@ int statusCount(const ContactDefinition& d, const Status& now, const Status& las
   return changes;
 }
 
+std::string columnsHeader(const ContactDefinition& d) {
+  std::string h = headerCell(statusColumn(d)) + headerCell("RESI_GEOM");
+  if (d.hasFriction()) {
+    h += headerCell(d.settings.continuous.frictionFixedPoint ? "BOUC_FROT" : "FROT_NEWT");
+  }
+  return h;
+}
+
+// The columns and the note; `what` names the counted entities ("" nodes, "pts " contact points),
+// `frictionCriterion` is given with friction.
+std::string columnsNote(const ContactDefinition& d, const std::vector<char>& status,
+                        const std::vector<char>& last, int loops, double geometry,
+                        std::optional<double> frictionCriterion, int active, double penetration,
+                        const char* what) {
+  std::string cells = firstCell(statusCount(d, status, last, loops)) + realCell(geometry);
+  if (frictionCriterion) {
+    int sticking = 0;
+    for (char st : status) {
+      sticking += st == 1 ? 1 : 0;
+    }
+    return cells + realCell(*frictionCriterion) +
+           fmt::format(" CONT {}{} act. ({} stick) pene {:.2e}", active, what, sticking, penetration);
+  }
+  return cells + fmt::format(" CONT {}{} act. pene {:.2e}", active, what, penetration);
+}
+
 } // namespace
 
 std::string ContinuousContactConstraint::iterationHeader() const {
-  std::string h = headerCell(statusColumn(*definition_)) + headerCell("RESI_GEOM");
-  if (friction()) {
-    h += headerCell(definition_->settings.continuous.frictionFixedPoint ? "BOUC_FROT" : "FROT_NEWT");
-  }
-  return h;
+  return columnsHeader(*definition_);
 }
 
 std::string ContinuousContactConstraint::iterationNote() const {
-  const int count = statusCount(*definition_, status_, lastStatus_, statusIterations_);
-  std::string cells = firstCell(count) + realCell(noteGeometry_);
-  if (friction()) {
-    int sticking = 0;
-    for (char st : status_) {
-      sticking += st == 1 ? 1 : 0;
-    }
-    return cells + realCell(frictionCriterion()) +
-           fmt::format(" CONT {} act. ({} stick) pene {:.2e}", noteActive_, sticking, notePenetration_);
-  }
-  return cells + fmt::format(" CONT {} act. pene {:.2e}", noteActive_, notePenetration_);
+  return columnsNote(*definition_, status_, lastStatus_, statusIterations_, noteGeometry_,
+                     friction() ? std::optional<double>(frictionCriterion()) : std::nullopt, noteActive_,
+                     notePenetration_, "");
 }
 
 std::string ContinuousPointContactConstraint::iterationHeader() const {
-  std::string h = headerCell(statusColumn(*definition_)) + headerCell("RESI_GEOM");
-  if (friction()) {
-    h += headerCell(definition_->settings.continuous.frictionFixedPoint ? "BOUC_FROT" : "FROT_NEWT");
-  }
-  return h;
+  return columnsHeader(*definition_);
 }
 
 std::string ContinuousPointContactConstraint::iterationNote() const {
-  const int count = statusCount(*definition_, status_, lastStatus_, statusIterations_);
-  std::string cells = firstCell(count) + realCell(noteGeometry_);
-  if (friction()) {
-    int sticking = 0;
-    for (char st : status_) {
-      sticking += st == 1 ? 1 : 0;
-    }
-    return cells + realCell(frictionCriterion()) +
-           fmt::format(" CONT {} pts act. ({} stick) pene {:.2e}", noteActive_, sticking, notePenetration_);
-  }
-  return cells + fmt::format(" CONT {} pts act. pene {:.2e}", noteActive_, notePenetration_);
+  return columnsNote(*definition_, status_, lastStatus_, statusIterations_, noteGeometry_,
+                     friction() ? std::optional<double>(frictionCriterion()) : std::nullopt, noteActive_,
+                     notePenetration_, " pts");
 }
 
 } // namespace stella::contact

@@ -28,6 +28,7 @@
 // (ALGO_CONT='PENALISATION') keep the status they were assembled with, as before.
 
 #include "solver/contact/ContinuousContactConstraint.hpp"
+#include "solver/contact/MultiplierSchur.hpp"
 
 #include "solver/nonlinear/SaddleSolver.hpp"
 
@@ -258,13 +259,7 @@ void ContinuousContactConstraint::correctWithLinearisedStatus(const Eigen::Vecto
     }
   }
   if (!current.unknowns.empty()) {
-    Eigen::VectorXd dx;
-    Eigen::VectorXd dy;
-    solver.solve(f, Eigen::VectorXd::Zero(dlambda.size()), Eigen::VectorXd::Zero(ddu.size()), dx, dy);
-    ddu -= dx;
-    if (dy.size() == dlambda.size()) {
-      dlambda -= dy;
-    }
+    applyMultiplierForces(f, ddu, dlambda, solver);
   }
   for (Eigen::Index i = 0; i < m; ++i) {
     const auto r = static_cast<std::size_t>(i);

@@ -6,6 +6,7 @@
 #include "solver/contact/ContactResultField.hpp"
 #include "solver/contact/ContinuousAdaptation.hpp"
 #include "solver/contact/ContinuousIntegrationRule.hpp"
+#include "solver/contact/MultiplierSchur.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/fem/ReferenceElement.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
@@ -280,26 +281,11 @@ void ContinuousPointContactConstraint::correct(const Eigen::VectorXd& u, Eigen::
   Eigen::VectorXd dl;
   if (nf == 0) {
     dl = Eigen::VectorXd();
-  } else if (sys.symmetric) {
-    const Eigen::LDLT<Eigen::MatrixXd> ldlt(0.5 * (s + s.transpose()));
-    const Eigen::VectorXd d = ldlt.vectorD();
-    const double scale = d.cwiseAbs().maxCoeff();
-    for (Eigen::Index p = 0; p < nf; ++p) {
-      if (!(std::fabs(d(p)) > 1e-12 * scale)) {
-        const Eigen::PermutationMatrix<Eigen::Dynamic> perm(ldlt.transpositionsP());
-        const Eigen::PermutationMatrix<Eigen::Dynamic> inverse(perm.inverse());
-        redundant(static_cast<int>(unknown(inverse.indices()(p)) % static_cast<std::size_t>(nm)));
-      }
-    }
-    dl = ldlt.solve(r);
   } else {
-    // ALGO_RESO_FROT='NEWTON' with sliding points: the only non-symmetric factorisation (dense, of
-    // the multipliers); K itself stays symmetric.
-    const Eigen::FullPivLU<Eigen::MatrixXd> lu(s);
-    if (!lu.isInvertible()) {
-      redundant(static_cast<int>(unknown(0) % static_cast<std::size_t>(nm)));
-    }
-    dl = lu.solve(r);
+    // non-symmetric with ALGO_RESO_FROT='NEWTON' and sliding points
+    dl = solveMultiplierSchur(s, r, sys.symmetric, [&](Eigen::Index i) {
+      redundant(static_cast<int>(unknown(i) % static_cast<std::size_t>(nm)));
+    });
   }
   Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
   bool any = false;
@@ -312,13 +298,7 @@ void ContinuousPointContactConstraint::correct(const Eigen::VectorXd& u, Eigen::
   if (!any) {
     return;
   }
-  Eigen::VectorXd dx;
-  Eigen::VectorXd dy;
-  solver.solve(f, Eigen::VectorXd::Zero(dlambda.size()), Eigen::VectorXd::Zero(n), dx, dy);
-  ddu -= dx;
-  if (dy.size() == dlambda.size()) {
-    dlambda -= dy;
-  }
+  applyMultiplierForces(f, ddu, dlambda, solver);
 }
 
 void ContinuousPointContactConstraint::redundant(int multiplier) const {
@@ -508,21 +488,10 @@ std::string ContinuousPointContactConstraint::continuationNote() const {
 
 void ContinuousPointContactConstraint::store(ResultStep& step) const {
   ContactConstraint::store(step);
-  auto found = step.fields.find("DEPL");
-  if (found == step.fields.end() || found->second == nullptr) {
+  const auto [out, c0] = multiplierDepl(step, friction() ? 1 : 0);
+  if (out == nullptr) {
     return;
   }
-  const Field& depl = *found->second;
-  if (depl.componentIndex("LAGS_C")) {
-    return;
-  }
-  std::vector<std::string> extra;
-  extra.push_back("LAGS_C");
-  if (friction()) {
-    extra.push_back("LAGS_F1");
-  }
-  const std::size_t c0 = depl.componentCount();
-  const auto out = withMultiplierComponents(depl, extra);
   for (std::size_t i = 0; i < multiplierNode_.size(); ++i) {
     const auto n = static_cast<std::size_t>(multiplierNode_[i]);
     out->value(n, c0) = lambda_[i];

@@ -3,6 +3,7 @@
 #include "solver/linalg/Backends.hpp"
 #include "solver/linalg/MumpsControlsApply.hpp"
 #include "solver/linalg/MumpsCoordinates.hpp"
+#include "solver/linalg/MumpsFactorise.hpp"
 
 #include <dmumps_c.h>
 
@@ -15,7 +16,7 @@
 namespace stella::linalg::detail {
 namespace {
 
-constexpr int jobInit = -1, jobEnd = -2, jobAnalyse = 1, jobFactorise = 2, jobSolve = 3;
+constexpr int jobInit = -1, jobEnd = -2, jobAnalyse = 1, jobSolve = 3;
 constexpr int useCommWorld = -987654; // MUMPS's code for the (sequential) world communicator
 
 // RENUM -> ICNTL(7). Debian 12's sequential MUMPS has no METIS (it falls back to its automatic
@@ -124,18 +125,7 @@ public:
     if (options_.nprec >= 0) {
       id_.cntl[2] = std::pow(10.0, -options_.nprec) / penaltyRatio_; // CNTL(3), see setPenaltyRatio
     }
-    for (int attempt = 0;; ++attempt) {
-      id_.job = jobFactorise;
-      dmumps_c(&id_);
-      // -8, -9, -11, -12, -13 (too little workspace): relax the memory estimate and retry
-      const int info = id_.infog[0];
-      if ((info == -8 || info == -9 || info == -11 || info == -12 || info == -14 || info == -15) &&
-          attempt < 4) {
-        id_.icntl[13] = std::max(2 * id_.icntl[13], 50);
-        continue;
-      }
-      break;
-    }
+    factoriseWithWorkspaceRetries(id_, dmumps_c); // too little workspace: relax the estimate, retry
     if (id_.infog[0] == -10) {
       throw SingularMatrixError("MUMPS", -1);
     }

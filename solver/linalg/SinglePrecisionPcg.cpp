@@ -7,6 +7,7 @@
 #include "solver/linalg/Backends.hpp"
 #include "solver/linalg/MumpsControlsApply.hpp"
 #include "solver/linalg/MumpsCoordinates.hpp"
+#include "solver/linalg/MumpsFactorise.hpp"
 
 #include <smumps_c.h>
 
@@ -18,7 +19,7 @@
 namespace stella::linalg::detail {
 namespace {
 
-constexpr int jobInit = -1, jobEnd = -2, jobAnalyse = 1, jobFactorise = 2, jobSolve = 3;
+constexpr int jobInit = -1, jobEnd = -2, jobAnalyse = 1, jobSolve = 3;
 constexpr int useCommWorld = -987654;
 
 class SinglePrecisionPcg final : public LinearSolver {
@@ -93,17 +94,7 @@ public:
     }
     values_.assign(a.values().begin(), a.values().end());
     id_.a = values_.data();
-    for (int attempt = 0;; ++attempt) {
-      id_.job = jobFactorise;
-      smumps_c(&id_);
-      const int info = id_.infog[0];
-      if ((info == -8 || info == -9 || info == -11 || info == -12 || info == -14 || info == -15) &&
-          attempt < 4) {
-        id_.icntl[13] = std::max(2 * id_.icntl[13], 50);
-        continue;
-      }
-      break;
-    }
+    factoriseWithWorkspaceRetries(id_, smumps_c);
     if (id_.infog[0] == -10) {
       throw SingularMatrixError("GCPC LDLT_SP", -1);
     }

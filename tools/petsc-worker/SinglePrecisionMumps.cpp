@@ -2,12 +2,14 @@
 
 #include "SinglePrecisionMumps.hpp"
 
+#include "solver/linalg/MumpsFactorise.hpp"
+
 #include <stdexcept>
 #include <string>
 
 namespace stella::petsc_worker {
 namespace {
-constexpr int jobInit = -1, jobEnd = -2, jobAnalyse = 1, jobFactorise = 2, jobSolve = 3;
+constexpr int jobInit = -1, jobEnd = -2, jobAnalyse = 1, jobSolve = 3;
 }
 
 SinglePrecisionMumps::SinglePrecisionMumps(int pivotPercent, int ordering) {
@@ -81,17 +83,7 @@ void SinglePrecisionMumps::factorise(Mat a) {
   MatSeqAIJRestoreArrayRead(a, &values);
   MatRestoreRowIJ(a, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done);
   id_.a = values_.data();
-  for (int attempt = 0;; ++attempt) {
-    id_.job = jobFactorise;
-    smumps_c(&id_);
-    const int info = id_.infog[0];
-    if ((info == -8 || info == -9 || info == -11 || info == -12 || info == -14 || info == -15) &&
-        attempt < 4) {
-      id_.icntl[13] = std::max(2 * id_.icntl[13], 50); // more workspace, as stella's MUMPS
-      continue;
-    }
-    break;
-  }
+  linalg::factoriseWithWorkspaceRetries(id_, smumps_c); // more workspace, as stella's MUMPS
   check("factorisation");
 }
 

@@ -473,24 +473,10 @@ void LacContactConstraint::store(ResultStep& step) const {
     }
   }
   step.fields["CONT_ELEM"] = std::make_shared<Field>(mortar::buildContElem(mesh, states));
-  auto found = step.fields.find("DEPL");
-  if (found == step.fields.end() || found->second == nullptr) {
+  const auto [out, c0] = multiplierDepl(step, !friction() ? 0 : directions() == 2 ? 2 : 1);
+  if (out == nullptr) {
     return;
   }
-  const Field& depl = *found->second;
-  if (depl.componentIndex("LAGS_C")) {
-    return;
-  }
-  std::vector<std::string> extra;
-  extra.push_back("LAGS_C");
-  if (friction()) {
-    extra.push_back("LAGS_F1");
-    if (directions() == 2) {
-      extra.push_back("LAGS_F2");
-    }
-  }
-  const std::size_t c0 = depl.componentCount();
-  const auto out = withMultiplierComponents(depl, extra);
   for (std::size_t p = 0; p < patchNode_.size(); ++p) {
     if (patchNode_[p] >= 0) {
       const auto n = static_cast<std::size_t>(patchNode_[p]);

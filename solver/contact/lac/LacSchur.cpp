@@ -3,6 +3,8 @@
 
 #include "solver/contact/lac/LacContactConstraint.hpp"
 
+#include "solver/contact/MultiplierSchur.hpp"
+
 #include "solver/nonlinear/SaddleSolver.hpp"
 
 #include <Eigen/Dense>
@@ -77,26 +79,11 @@ void LacContactConstraint::eliminate(const Eigen::VectorXd& u, Eigen::VectorXd& 
         r.slip() ? slipAt(r.patch, u)[static_cast<std::size_t>(r.direction)] : gapAt(r.patch, u);
     rhs(i) = value + bdu / rows_[r.patch].pairedLength;
   }
-  if (!symmetric) {
-    const Eigen::FullPivLU<Eigen::MatrixXd> lu(s);
-    if (!lu.isInvertible()) {
-      redundant(rows.front().patch, rows.front().slip());
-    }
-    applyMultipliers(lu.solve(rhs), ddu, dlambda, solver, rows, columns);
-    return;
-  }
-  const Eigen::LDLT<Eigen::MatrixXd> ldlt(0.5 * (s + s.transpose()));
-  const Eigen::VectorXd d = ldlt.vectorD();
-  const double scale = d.cwiseAbs().maxCoeff();
-  for (Eigen::Index p = 0; p < mc; ++p) {
-    if (!(std::fabs(d(p)) > 1e-12 * scale)) {
-      const Eigen::PermutationMatrix<Eigen::Dynamic> perm(ldlt.transpositionsP());
-      const Eigen::PermutationMatrix<Eigen::Dynamic> inverse(perm.inverse());
-      const SchurRow& r = rows[static_cast<std::size_t>(inverse.indices()(p))];
-      redundant(r.patch, r.slip());
-    }
-  }
-  applyMultipliers(ldlt.solve(rhs), ddu, dlambda, solver, rows, columns);
+  const Eigen::VectorXd y = solveMultiplierSchur(s, rhs, symmetric, [&](Eigen::Index i) {
+    const SchurRow& r = rows[static_cast<std::size_t>(i)];
+    redundant(r.patch, r.slip());
+  });
+  applyMultipliers(y, ddu, dlambda, solver, rows, columns);
 }
 
 void LacContactConstraint::applyMultipliers(const Eigen::VectorXd& y, Eigen::VectorXd& ddu,
@@ -118,13 +105,7 @@ void LacContactConstraint::applyMultipliers(const Eigen::VectorXd& y, Eigen::Vec
       lagsC_[r.patch] += y(jj) / length;
     }
   }
-  Eigen::VectorXd dx;
-  Eigen::VectorXd dy;
-  solver.solve(f, Eigen::VectorXd::Zero(dlambda.size()), Eigen::VectorXd::Zero(n), dx, dy);
-  ddu -= dx;
-  if (dy.size() == dlambda.size()) {
-    dlambda -= dy;
-  }
+  applyMultiplierForces(f, ddu, dlambda, solver);
 }
 
 } // namespace stella::contact::lac

@@ -60,6 +60,14 @@ inline Mesh twoBlocks(CellType type, int na, int nb, double gap) {
   return mesh;
 }
 
+// The DDL_IMPO of twoBlocks' symmetry planes (x = 0 of both blocks, y = 0 of A, and in 3D y = 0 of
+// both and z = 0 of A), for AFFE_CHAR_MECA(DDL_IMPO=(...)).
+inline std::string blockSymmetries(bool threeD) {
+  return threeD ? "_F(GROUP_MA=('A_XMIN', 'B_XMIN'), DX=0.0), _F(GROUP_MA=('A_YMIN', 'B_YMIN'), DY=0.0), "
+                  "_F(GROUP_MA='A_ZMIN', DZ=0.0)"
+                : "_F(GROUP_MA=('A_XMIN', 'B_XMIN'), DX=0.0), _F(GROUP_MA='A_YMIN', DY=0.0)";
+}
+
 inline SimpleKeyword simple(const std::string& name, ValueList values) {
   SimpleKeyword k;
   k.name = name;

@@ -56,10 +56,7 @@ struct Blocks {
   std::string comm() const {
     const std::string up = threeD ? "Z" : "Y";
     const std::string d = threeD ? "DZ" : "DY";
-    const std::string sym =
-        threeD ? "_F(GROUP_MA=('A_XMIN', 'B_XMIN'), DX=0.0), _F(GROUP_MA=('A_YMIN', 'B_YMIN'), DY=0.0), "
-                 "_F(GROUP_MA='A_ZMIN', DZ=0.0)"
-               : "_F(GROUP_MA=('A_XMIN', 'B_XMIN'), DX=0.0), _F(GROUP_MA='A_YMIN', DY=0.0)";
+    const std::string sym = testing::blockSymmetries(threeD);
     const std::string algo =
         penalty > 0.0 ? fmt::format(", ALGO_CONT='PENALISATION', COEF_PENA_CONT={}", penalty) : std::string();
     return fmt::format(

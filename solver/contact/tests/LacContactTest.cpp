@@ -21,10 +21,7 @@ struct LacBlocks {
   std::string comm() const {
     const std::string up = threeD ? "Z" : "Y";
     const std::string d = threeD ? "DZ" : "DY";
-    const std::string sym =
-        threeD ? "_F(GROUP_MA=('A_XMIN', 'B_XMIN'), DX=0.0), _F(GROUP_MA=('A_YMIN', 'B_YMIN'), DY=0.0), "
-                 "_F(GROUP_MA='A_ZMIN', DZ=0.0)"
-               : "_F(GROUP_MA=('A_XMIN', 'B_XMIN'), DX=0.0), _F(GROUP_MA='A_YMIN', DY=0.0)";
+    const std::string sym = testing::blockSymmetries(threeD);
     return fmt::format(
         "DEBUT()\n"
         "M0 = LIRE_MAILLAGE(FORMAT='ASTER', UNITE=20)\n"
