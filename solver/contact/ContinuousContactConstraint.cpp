@@ -28,21 +28,6 @@ bool nodeIntegrable(CellType type) {
          contactIntegrationRule(type, ContactIntegration::Auto, 0).atNodes();
 }
 
-// |J| of a skin cell at the reference point xi (length or area scale).
-double jacobian(const fem::ReferenceElement& ref, const std::vector<Point3>& x, const Eigen::Vector3d& xi) {
-  const Eigen::MatrixXd d = ref.gradients(xi);
-  Point3 t1{0, 0, 0};
-  Point3 t2{0, 0, 0};
-  for (int k = 0; k < ref.nodeCount(); ++k) {
-    const auto& p = x[static_cast<std::size_t>(k)];
-    t1 = t1 + d(k, 0) * p;
-    if (ref.dimension() == 2) {
-      t2 = t2 + d(k, 1) * p;
-    }
-  }
-  return ref.dimension() == 2 ? norm(cross(t1, t2)) : norm(t1);
-}
-
 } // namespace
 
 ContinuousContactConstraint::ContinuousContactConstraint(std::shared_ptr<const ContactDefinition> definition,
@@ -108,7 +93,7 @@ void ContinuousContactConstraint::computeWeights() {
       for (int g = 0; g < rule.size(); ++g) {
         const Eigen::Vector3d& xi = rule.points[static_cast<std::size_t>(g)];
         const Eigen::VectorXd n = ref.values(xi);
-        double scale = rule.weights[static_cast<std::size_t>(g)] * jacobian(ref, x, xi);
+        double scale = rule.weights[static_cast<std::size_t>(g)] * skinCellJacobian(ref, x, xi);
         if (modelling_ == fem::Modelling::Axisymmetric) {
           double r = 0.0;
           for (std::size_t k = 0; k < nodes.size(); ++k) {
@@ -372,23 +357,18 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
   }
   const auto mc = static_cast<Eigen::Index>(contact.size());
   const Eigen::Index n = ddu.size();
-  // S = B K^-1 C^T by blocks of columns (one backend call each): n x block doubles at a time.
-  constexpr Eigen::Index block = 64;
-  Eigen::MatrixXd s = Eigen::MatrixXd::Zero(mc, mc);
-  for (Eigen::Index first = 0; first < mc; first += block) {
-    const Eigen::Index cols = std::min(block, mc - first);
-    Eigen::MatrixXd x = Eigen::MatrixXd::Zero(n, cols);
-    for (Eigen::Index j = 0; j < cols; ++j) {
-      addColumn(contact[static_cast<std::size_t>(first + j)], 1.0, x.col(j));
-    }
-    solver.solveHomogeneous(x); // K^-1 C^T
-    for (Eigen::Index i = 0; i < mc; ++i) {
-      const Multiplier& c = contact[static_cast<std::size_t>(i)];
-      for (SparseRows::InnerIterator it(constraintRow(c), c.row); it; ++it) {
-        s.row(i).segment(first, cols) += it.value() * x.row(it.col());
-      }
-    }
-  }
+  const Eigen::MatrixXd s = schurByColumnBlocks(
+      mc, n, solver,
+      [&](Eigen::Index j, Eigen::Ref<Eigen::VectorXd> x) {
+        addColumn(contact[static_cast<std::size_t>(j)], 1.0, x);
+      },
+      [&](Eigen::Index i, const Eigen::MatrixXd& x,
+          Eigen::Ref<Eigen::RowVectorXd, 0, Eigen::InnerStride<>> out) {
+        const Multiplier& c = contact[static_cast<std::size_t>(i)];
+        for (SparseRows::InnerIterator it(constraintRow(c), c.row); it; ++it) {
+          out += it.value() * x.row(it.col());
+        }
+      });
   const Eigen::VectorXd g = gapsAt(u);
   Eigen::VectorXd rhs(mc);
   for (Eigen::Index i = 0; i < mc; ++i) {

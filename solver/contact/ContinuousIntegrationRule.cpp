@@ -5,6 +5,7 @@
 #include "solver/contact/ContinuousIntegrationRule.hpp"
 
 #include "solver/fem/ReferenceElement.hpp"
+#include "solver/mesh/MeshGeometry.hpp"
 
 #include <array>
 #include <cmath>
@@ -362,6 +363,21 @@ ContactIntegrationRule contactIntegrationRule(CellType type, ContactIntegration 
     }
   }
   return r;
+}
+
+double skinCellJacobian(const fem::ReferenceElement& ref, const std::vector<Point3>& x,
+                        const Eigen::Vector3d& xi) {
+  const Eigen::MatrixXd d = ref.gradients(xi);
+  Point3 t1{0, 0, 0};
+  Point3 t2{0, 0, 0};
+  for (int k = 0; k < ref.nodeCount(); ++k) {
+    const auto& p = x[static_cast<std::size_t>(k)];
+    t1 = t1 + d(k, 0) * p;
+    if (ref.dimension() == 2) {
+      t2 = t2 + d(k, 1) * p;
+    }
+  }
+  return ref.dimension() == 2 ? norm(cross(t1, t2)) : norm(t1);
 }
 
 } // namespace stella::contact

@@ -19,9 +19,14 @@
 // The weights integrate over the reference cell (they sum to its measure).
 
 #include "solver/mesh/CellType.hpp"
+#include "solver/mesh/Mesh.hpp"
 
 #include <Eigen/Dense>
 #include <vector>
+
+namespace stella::fem {
+class ReferenceElement;
+}
 
 namespace stella::contact {
 
@@ -52,5 +57,10 @@ bool contactIntegrationDefined(CellType type);
 
 // The scheme's keyword value (for messages): "AUTO", "GAUSS", "SIMPSON", "NCOTES".
 const char* integrationName(ContactIntegration scheme);
+
+// |J| of a skin cell of nodes x at the reference point xi (its length or area scale): what a
+// rule's weights are multiplied by on the real cell.
+double skinCellJacobian(const fem::ReferenceElement& ref, const std::vector<Point3>& x,
+                        const Eigen::Vector3d& xi);
 
 } // namespace stella::contact

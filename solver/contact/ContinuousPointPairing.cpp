@@ -23,20 +23,6 @@ bool nodalAuto(CellType type) {
          contactIntegrationRule(type, ContactIntegration::Auto, 0).atNodes();
 }
 
-// |J| of a skin cell at the reference point xi (length or area scale).
-double jacobian(const fem::ReferenceElement& ref, const std::vector<Point3>& x, const Eigen::Vector3d& xi) {
-  const Eigen::MatrixXd d = ref.gradients(xi);
-  Point3 t1{0, 0, 0};
-  Point3 t2{0, 0, 0};
-  for (int k = 0; k < ref.nodeCount(); ++k) {
-    t1 = t1 + d(k, 0) * x[static_cast<std::size_t>(k)];
-    if (ref.dimension() == 2) {
-      t2 = t2 + d(k, 1) * x[static_cast<std::size_t>(k)];
-    }
-  }
-  return ref.dimension() == 2 ? norm(cross(t1, t2)) : norm(t1);
-}
-
 } // namespace
 
 bool needsContactPoints(const ContactDefinition& definition) {
@@ -98,7 +84,7 @@ void ContinuousPointContactConstraint::buildPoints() {
         p.zone = static_cast<int>(z);
         p.penalised = zone.algorithm == ContactAlgorithm::ContinuePenalty;
         p.rho = p.penalised ? zone.continuous.penalty : zone.continuous.augmentation;
-        p.weight = rule.weights[static_cast<std::size_t>(g)] * jacobian(ref, x, xi);
+        p.weight = rule.weights[static_cast<std::size_t>(g)] * skinCellJacobian(ref, x, xi);
         double r = 0.0;
         for (std::size_t k = 0; k < nodes.size(); ++k) {
           p.nodes.push_back(nodes[k]);

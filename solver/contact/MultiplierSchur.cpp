@@ -5,6 +5,7 @@
 #include "solver/nonlinear/SaddleSolver.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -44,6 +45,27 @@ void applyMultiplierForces(const Eigen::VectorXd& f, Eigen::VectorXd& ddu, Eigen
   if (dy.size() == dlambda.size()) {
     dlambda -= dy;
   }
+}
+
+Eigen::MatrixXd
+schurByColumnBlocks(Eigen::Index m, Eigen::Index n, SaddleSolver& solver,
+                    const std::function<void(Eigen::Index, Eigen::Ref<Eigen::VectorXd>)>& column,
+                    const std::function<void(Eigen::Index, const Eigen::MatrixXd&,
+                                             Eigen::Ref<Eigen::RowVectorXd, 0, Eigen::InnerStride<>>)>& row) {
+  constexpr Eigen::Index block = 64;
+  Eigen::MatrixXd s = Eigen::MatrixXd::Zero(m, m);
+  for (Eigen::Index first = 0; first < m; first += block) {
+    const Eigen::Index cols = std::min(block, m - first);
+    Eigen::MatrixXd x = Eigen::MatrixXd::Zero(n, cols);
+    for (Eigen::Index j = 0; j < cols; ++j) {
+      column(first + j, x.col(j));
+    }
+    solver.solveHomogeneous(x); // K^-1 C^T
+    for (Eigen::Index i = 0; i < m; ++i) {
+      row(i, x, s.row(i).segment(first, cols));
+    }
+  }
+  return s;
 }
 
 } // namespace stella::contact

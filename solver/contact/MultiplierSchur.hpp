@@ -25,4 +25,13 @@ Eigen::VectorXd solveMultiplierSchur(const Eigen::MatrixXd& s, const Eigen::Vect
 void applyMultiplierForces(const Eigen::VectorXd& f, Eigen::VectorXd& ddu, Eigen::VectorXd& dlambda,
                            SaddleSolver& solver);
 
+// S = B K^-1 C^T (m x m, K of n equations) by blocks of 64 columns, one backend call each (n x 64
+// doubles at a time): `column(j, x)` adds C^T's column j into x (zero on entry), `row(i, x, out)`
+// adds B's row i times x (n x the block's columns) into out.
+Eigen::MatrixXd
+schurByColumnBlocks(Eigen::Index m, Eigen::Index n, SaddleSolver& solver,
+                    const std::function<void(Eigen::Index, Eigen::Ref<Eigen::VectorXd>)>& column,
+                    const std::function<void(Eigen::Index, const Eigen::MatrixXd&,
+                                             Eigen::Ref<Eigen::RowVectorXd, 0, Eigen::InnerStride<>>)>& row);
+
 } // namespace stella::contact

@@ -47,27 +47,23 @@ void LacContactConstraint::eliminate(const Eigen::VectorXd& u, Eigen::VectorXd& 
       }
     }
   }
-  constexpr Eigen::Index block = 64;
-  Eigen::MatrixXd s = Eigen::MatrixXd::Zero(mc, mc);
-  for (Eigen::Index first = 0; first < mc; first += block) {
-    const Eigen::Index cols = std::min(block, mc - first);
-    Eigen::MatrixXd x = Eigen::MatrixXd::Zero(n, cols);
-    for (Eigen::Index j = 0; j < cols; ++j) {
-      const auto k = static_cast<std::size_t>(first + j);
-      const double length = rows_[rows[k].patch].pairedLength;
-      for (const auto& [e, v] : columns[k]) {
-        x(e, j) += v / length;
-      }
-    }
-    solver.solveHomogeneous(x);
-    for (Eigen::Index i = 0; i < mc; ++i) {
-      const SchurRow& r = rows[static_cast<std::size_t>(i)];
-      const double length = rows_[r.patch].pairedLength;
-      for (const auto& [e, v] : gradientOf(r)) {
-        s.row(i).segment(first, cols) += (v / length) * x.row(e);
-      }
-    }
-  }
+  const Eigen::MatrixXd s = schurByColumnBlocks(
+      mc, n, solver,
+      [&](Eigen::Index j, Eigen::Ref<Eigen::VectorXd> x) {
+        const auto k = static_cast<std::size_t>(j);
+        const double length = rows_[rows[k].patch].pairedLength;
+        for (const auto& [e, v] : columns[k]) {
+          x(e) += v / length;
+        }
+      },
+      [&](Eigen::Index i, const Eigen::MatrixXd& x,
+          Eigen::Ref<Eigen::RowVectorXd, 0, Eigen::InnerStride<>> out) {
+        const SchurRow& r = rows[static_cast<std::size_t>(i)];
+        const double length = rows_[r.patch].pairedLength;
+        for (const auto& [e, v] : gradientOf(r)) {
+          out += (v / length) * x.row(e);
+        }
+      });
   Eigen::VectorXd rhs(mc);
   for (Eigen::Index i = 0; i < mc; ++i) {
     const SchurRow& r = rows[static_cast<std::size_t>(i)];
