@@ -155,17 +155,12 @@ std::unique_ptr<StepConstraint> makeLac(std::shared_ptr<const ContactDefinition>
 }
 
 // INTEGRATION with contact points off the slave nodes (GAUSS, SIMPSON, NCOTES; AUTO on TRIA6/QUAD8):
-// the master's normal only; Coulomb friction in 2D without SANS_GROUP_NO_FR, SEUIL_INIT, GLISSIERE.
-void refuseAtPoints(const ContactDefinition& def, fem::Modelling modelling) {
+// the master's normal only (friction, SEUIL_INIT, GLISSIERE, SANS_GROUP_NO_FR as at the nodes).
+void refuseAtPoints(const ContactDefinition& def) {
   const std::string note =
       "contact points off the slave nodes (ContinuousPointContact) are implemented with "
-      "NORMALE='MAIT', VECT_MAIT=VECT_ESCL='AUTO', LISSAGE='NON', GLISSIERE='NON', and FROTTEMENT='COULOMB' "
-      "in 2D (D_PLAN, C_PLAN, AXIS) without SANS_GROUP_NO_FR or SEUIL_INIT; use INTEGRATION='AUTO' on "
+      "NORMALE='MAIT', VECT_MAIT=VECT_ESCL='AUTO' and LISSAGE='NON'; use INTEGRATION='AUTO' on "
       "TRIA3, QUAD4, QUAD9 (SEG2, SEG3) slave cells for the rest";
-  if (def.hasFriction() && modelling == fem::Modelling::ThreeD) {
-    notImplemented("FROTTEMENT='COULOMB' in 3D with INTEGRATION other than 'AUTO' on linear cells",
-                   def.settings.frictionAt, note);
-  }
   if (def.settings.smoothing) {
     notImplemented("LISSAGE='OUI' with INTEGRATION other than 'AUTO' on linear cells", def.location, note);
   }
@@ -173,16 +168,6 @@ void refuseAtPoints(const ContactDefinition& def, fem::Modelling modelling) {
     const SourceLocation& at = z.continuous.integration != contact::ContactIntegration::Auto
                                    ? z.continuous.integrationAt
                                    : z.location;
-    if (z.slide) {
-      notImplemented("GLISSIERE='OUI' with INTEGRATION other than 'AUTO' on linear cells", z.location, note);
-    }
-    if (def.hasFriction() && !z.continuous.frictionExcludedGroups.empty()) {
-      notImplemented("SANS_GROUP_NO_FR with INTEGRATION other than 'AUTO' on linear cells",
-                     z.continuous.frictionExcludedAt, note);
-    }
-    if (def.hasFriction() && z.continuous.initialThreshold) {
-      notImplemented("SEUIL_INIT with INTEGRATION other than 'AUTO' on linear cells", z.location, note);
-    }
     if (z.normal != contact::NormalChoice::Master || z.masterVector != contact::VectorChoice::Auto ||
         z.slaveVector != contact::VectorChoice::Auto) {
       notImplemented(
@@ -248,7 +233,7 @@ std::unique_ptr<contact::ContactConstraint> makeContinuous(std::shared_ptr<const
   def = contact::adaptContinuousCoefficients(std::move(def), system.materials(),
                                              fem::spaceDimension(system.model().modelling));
   if (contact::needsContactPoints(*def)) {
-    refuseAtPoints(*def, system.model().modelling);
+    refuseAtPoints(*def);
     auto p = std::make_unique<contact::ContinuousPointContactConstraint>(std::move(def), system.dofs(),
                                                                          system.model().modelling);
     p->setInterpenetrationPolicy(policy);

@@ -14,6 +14,7 @@
 //     mu |LAGS_C| on the pairing's tangents (norm <= 1, 1 sliding), 0 out of contact.
 
 #include "solver/contact/ContinuousContactConstraint.hpp"
+#include "solver/contact/ContinuousFrictionExclusion.hpp"
 
 #include "solver/mesh/MeshGeometry.hpp"
 
@@ -26,32 +27,6 @@ namespace stella::contact {
 namespace {
 
 using Triplets = std::vector<Eigen::Triplet<double>>;
-
-// The slave nodes of SANS_GROUP_NO_FR, per zone (node flags).
-std::vector<std::vector<char>> excludedFrictionNodes(const ContactDefinition& def) {
-  std::vector<std::vector<char>> excluded(def.zones.size());
-  for (std::size_t z = 0; z < def.zones.size(); ++z) {
-    const ContinuousZone& c = def.zones[z].continuous;
-    if (c.frictionExcludedGroups.empty()) {
-      continue;
-    }
-    excluded[z].assign(static_cast<std::size_t>(def.mesh->nodeCount()), 0);
-    for (const std::string& group : c.frictionExcludedGroups) {
-      const auto* nodes = def.mesh->nodeGroup(group);
-      if (nodes == nullptr) {
-        throw UserError(
-            Diagnostic::fatal("CONTACT_1",
-                              fmt::format("SANS_GROUP_NO_FR: the mesh has no node group '{}'", group),
-                              c.frictionExcludedAt)
-                .withNote("create it with DEFI_GROUP CREA_GROUP_NO or give an existing group"));
-      }
-      for (NodeId n : *nodes) {
-        excluded[z][static_cast<std::size_t>(n)] = 1;
-      }
-    }
-  }
-  return excluded;
-}
 
 void addCombination(Triplets& out, int row, const SparseRows& t1, const SparseRows& t2, double a, double b) {
   for (SparseRows::InnerIterator it(t1, row); it; ++it) {
@@ -88,29 +63,12 @@ void ContinuousContactConstraint::frictionPaired() {
     int& d = directions_[static_cast<std::size_t>(i)];
     if (!flags.empty() && flags[static_cast<std::size_t>(l.slave)] != 0) {
       const ContinuousZone& z = definition_->zones[static_cast<std::size_t>(l.zone)].continuous;
-      d = 0;
-      if (z.excludedDirection) {
-        const Point3 e{(*z.excludedDirection)[0], (*z.excludedDirection)[1], (*z.excludedDirection)[2]};
-        const double a1 = dot(e, l.tangent1);
-        const double a2 = threeD ? dot(e, l.tangent2) : 0.0;
-        const double size = std::hypot(a1, a2);
-        if (!(size > 1e-8 * norm(e))) {
-          throw UserError(
-              Diagnostic::fatal(
-                  "CONTACT_30",
-                  fmt::format("DIRE_EXCL_FROT ({}, {}, {}) is normal to the contact surface at slave "
-                              "node {}: it excludes no friction direction there",
-                              e[0], e[1], e[2], definition_->mesh->nodeName(l.slave)),
-                  z.excludedDirectionAt)
-                  .withNote(
-                      "give a direction of the tangent plane (global frame), e.g. the DX of a symmetry "
-                      "plane x = 0 (notice §4.7), or remove DIRE_EXCL_FROT to exclude friction entirely"));
-        }
-        if (threeD) {
-          basis.row(0) = Eigen::Vector2d(-a2, a1).transpose() / size; // the tangent orthogonal to it
-          basis.row(1).setZero();
-          d = 1;
-        }
+      const FrictionBasis b =
+          excludedFrictionBasis(z, l.tangent1, l.tangent2, threeD,
+                                fmt::format("slave node {}", definition_->mesh->nodeName(l.slave)));
+      d = b.directions;
+      if (d > 0) {
+        basis = b.basis;
       }
     }
     for (int j = 0; j < d; ++j) {

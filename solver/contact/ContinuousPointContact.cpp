@@ -74,7 +74,7 @@ std::vector<char> ContinuousPointContactConstraint::statusAt(const Eigen::Vector
     if (q < frozen_.size() && frozen_[q] >= 0) {
       s[q] = static_cast<char>(frozen_[q]);
     } else if (p.paired && p.weight != 0.0) {
-      s[q] = indicatorAt(p, u) < 0.0 ? 1 : 0;
+      s[q] = indicatorAt(p, u) < 0.0 || closed_[q] != 0 ? 1 : 0; // GLISSIERE: held closed
     }
     if (s[q] != 0 && friction()) {
       s[q] = coulombStatus(coulombAt(q), slipAt(p, u));
@@ -118,6 +118,7 @@ void ContinuousPointContactConstraint::beginStep(const Eigen::VectorXd& u, doubl
                      ? (g < 0.0 && (c.initDistance < 0.0 || -g <= c.initDistance) ? 1 : 0)
                      : 0;
   }
+  applyInitialOptions(); // SEUIL_INIT, GLISSIERE
 }
 
 void ContinuousPointContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::VectorXd& forces,
@@ -212,15 +213,8 @@ void ContinuousPointContactConstraint::correct(const Eigen::VectorXd& u, Eigen::
   }
   recordThreshold();
   const Eigen::Index n = ddu.size();
-  const Eigen::Index nu = frictionUnknowns() ? 2 * nm : nm; // LAGS_C, then LAGS_F
-  MultiplierSystem sys;
-  sys.row.resize(static_cast<std::size_t>(nu));
-  sys.column.resize(static_cast<std::size_t>(nu));
-  sys.mass = Eigen::MatrixXd::Zero(nu, nu);
-  sys.residual = Eigen::VectorXd::Zero(nu);
-  sys.used.assign(static_cast<std::size_t>(nu), 0);
-  normalEquations(u, ddu, status, sys);
-  frictionEquations(u, ddu, status, sys);
+  MultiplierSystem sys = multiplierSystem(u, ddu, status);
+  const auto nu = static_cast<Eigen::Index>(sys.row.size());
   addContactIterations(1);
   // The unknowns: the multipliers of the nodes with a point in contact in their cells (a row of
   // B); the others are 0, as in the nodal formulation (their consistent equation, the block M of
@@ -232,8 +226,7 @@ void ContinuousPointContactConstraint::correct(const Eigen::VectorXd& u, Eigen::
       free.push_back(i);
       continue;
     }
-    double& value =
-        i < nm ? lambda_[static_cast<std::size_t>(i)] : lambdaT_[static_cast<std::size_t>(i - nm)];
+    double& value = multiplierValue(i);
     sys.residual += sys.mass.col(i) * value; // the residuals with this multiplier set to 0
     value = 0.0;
   }
@@ -284,14 +277,14 @@ void ContinuousPointContactConstraint::correct(const Eigen::VectorXd& u, Eigen::
   } else {
     // non-symmetric with ALGO_RESO_FROT='NEWTON' and sliding points
     dl = solveMultiplierSchur(s, r, sys.symmetric, [&](Eigen::Index i) {
-      redundant(static_cast<int>(unknown(i) % static_cast<std::size_t>(nm)));
+      redundant(multiplierOfUnknown(static_cast<Eigen::Index>(unknown(i))));
     });
   }
   Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
   bool any = false;
   for (Eigen::Index j = 0; j < nf; ++j) {
     const std::size_t i = unknown(j);
-    (i < static_cast<std::size_t>(nm) ? lambda_[i] : lambdaT_[i - static_cast<std::size_t>(nm)]) += dl(j);
+    multiplierValue(static_cast<Eigen::Index>(i)) += dl(j);
     any = any || !sys.row[i].empty() || !sys.column[i].empty();
     addColumn(j, dl(j), f);
   }
@@ -479,6 +472,7 @@ void ContinuousPointContactConstraint::accepted(const std::vector<LinkState>& ro
   lambdaTStart_ = lambdaT_;
   pressureTStart_ = pressureT_;
   contactStart_ = status_;
+  holdClosed();
   firstStep_ = false;
 }
 
@@ -488,7 +482,8 @@ std::string ContinuousPointContactConstraint::continuationNote() const {
 
 void ContinuousPointContactConstraint::store(ResultStep& step) const {
   ContactConstraint::store(step);
-  const auto [out, c0] = multiplierDepl(step, friction() ? 1 : 0);
+  const auto [out, c0] =
+      multiplierDepl(step, friction() ? static_cast<std::size_t>(tangentComponents()) : 0U);
   if (out == nullptr) {
     return;
   }

@@ -16,6 +16,23 @@
 
 namespace stella::contact {
 
+namespace {} // namespace
+
+std::vector<std::pair<int, double>>
+rowAlong(const DofMap& dofs, const std::vector<std::pair<NodeId, double>>& terms, const Point3& v) {
+  std::vector<std::pair<int, double>> row;
+  for (int c = 0; c < dofs.components(); ++c) {
+    const double vc = v[static_cast<std::size_t>(c)];
+    for (const auto& [node, a] : terms) {
+      const int e = dofs.dof(node, c);
+      if (e >= 0 && vc != 0.0) {
+        row.emplace_back(e, a * vc);
+      }
+    }
+  }
+  return row;
+}
+
 namespace {
 
 bool nodalAuto(CellType type) {
@@ -82,6 +99,7 @@ void ContinuousPointContactConstraint::buildPoints() {
         const Eigen::VectorXd n = ref.values(xi);
         ContactPoint p;
         p.zone = static_cast<int>(z);
+        p.cell = c;
         p.penalised = zone.algorithm == ContactAlgorithm::ContinuePenalty;
         p.rho = p.penalised ? zone.continuous.penalty : zone.continuous.augmentation;
         p.weight = rule.weights[static_cast<std::size_t>(g)] * skinCellJacobian(ref, x, xi);
@@ -100,6 +118,7 @@ void ContinuousPointContactConstraint::buildPoints() {
     }
   }
   checkPointCount();
+  markExcludedPoints();
   penalisedNode_.assign(multiplierNode_.size(), 0);
   for (const ContactPoint& p : points_) {
     for (int i : p.multiplier) {
@@ -110,9 +129,10 @@ void ContinuousPointContactConstraint::buildPoints() {
   }
   penaltyFactor_.assign(definition_->zones.size(), 1.0);
   lambda_.assign(multiplierNode_.size(), 0.0);
-  lambdaT_.assign(multiplierNode_.size(), 0.0);
+  lambdaT_.assign(multiplierNode_.size(), Eigen::Vector2d::Zero());
   lambdaTStart_ = lambdaT_;
-  pressureT_.assign(points_.size(), 0.0);
+  pressureT_.assign(points_.size(), Eigen::Vector2d::Zero());
+  closed_.assign(points_.size(), 0);
   pressureTStart_ = pressureT_;
   lambdaStart_ = lambda_;
   status_.assign(points_.size(), 0);
@@ -163,12 +183,11 @@ void ContinuousPointContactConstraint::pairPoints() {
     }
   }
   const int dim = mesh.dimension(); // the master cells' parametric dimension is dim - 1
-  const int nc = dofs_.components();
   for (ContactPoint& p : points_) {
     const ContactZone& zone = definition_->zones[static_cast<std::size_t>(p.zone)];
     p.paired = false;
     p.row.clear();
-    p.tangentRow.clear();
+    p.frictionRow = {};
     Point3 x{0, 0, 0};
     Point3 reference{0, 0, 0};
     std::set<CellId> candidates;
@@ -211,29 +230,21 @@ void ContinuousPointContactConstraint::pairPoints() {
     p.paired = true;
     p.gap = dot(n, x - cp.x);
     const auto masterNodes = mesh.cellNodes(static_cast<CellId>(best.cell));
-    // the gap's gradient A_p along n; with friction (2D) the slip's T_p along t = n turned by +90 degrees
-    const Point3 t{-n[1], n[0], 0.0};
-    p.tangent = {t[0], t[1], t[2]};
-    for (int c = 0; c < nc; ++c) {
-      const auto cc = static_cast<std::size_t>(c);
-      for (std::size_t k = 0; k < p.nodes.size(); ++k) {
-        const int e = dofs_.dof(p.nodes[k], c);
-        if (e >= 0 && p.shape[k] != 0.0 && n[cc] != 0.0) {
-          p.row.emplace_back(e, p.shape[k] * n[cc]);
-        }
-        if (e >= 0 && p.shape[k] != 0.0 && t[cc] != 0.0 && friction()) {
-          p.tangentRow.emplace_back(e, p.shape[k] * t[cc]);
-        }
+    // the gap's gradient A_p along n: +N_k n on the slave nodes, -phi_j n on the master nodes
+    std::vector<std::pair<NodeId, double>> terms;
+    for (std::size_t k = 0; k < p.nodes.size(); ++k) {
+      if (p.shape[k] != 0.0) {
+        terms.emplace_back(p.nodes[k], p.shape[k]);
       }
-      for (std::size_t j = 0; j < masterNodes.size(); ++j) {
-        const int e = dofs_.dof(masterNodes[j], c);
-        if (e >= 0 && cp.shape.n[j] != 0.0 && n[cc] != 0.0) {
-          p.row.emplace_back(e, -cp.shape.n[j] * n[cc]);
-        }
-        if (e >= 0 && cp.shape.n[j] != 0.0 && t[cc] != 0.0 && friction()) {
-          p.tangentRow.emplace_back(e, -cp.shape.n[j] * t[cc]);
-        }
+    }
+    for (std::size_t j = 0; j < masterNodes.size(); ++j) {
+      if (cp.shape.n[j] != 0.0) {
+        terms.emplace_back(masterNodes[j], -cp.shape.n[j]);
       }
+    }
+    p.row = rowAlong(dofs_, terms, n);
+    if (friction()) {
+      pairFriction(p, n, terms);
     }
   }
 }

@@ -290,9 +290,6 @@ TEST(ContinuousIntegrationRule, WhatThePointsDoNotImplementIsRefused) {
     std::string zone;
     std::string named;
   } cases[] = {
-      {" FROTTEMENT='COULOMB',", ", COULOMB=0.2, SEUIL_INIT=1.0, INTEGRATION='SIMPSON'",
-       "SEUIL_INIT with INTEGRATION other than 'AUTO' on linear cells"},
-      {"", ", GLISSIERE='OUI', INTEGRATION='GAUSS'", "GLISSIERE='OUI' with INTEGRATION other than 'AUTO'"},
       {"", ", NORMALE='ESCL', INTEGRATION='NCOTES'", "NORMALE other than 'MAIT'"},
       {"", ", INTEGRATION='GAUSS', ORDRE_INT=1",
        "gives 2 contact points on the slave cells of zone 1, fewer "
@@ -312,20 +309,6 @@ TEST(ContinuousIntegrationRule, WhatThePointsDoNotImplementIsRefused) {
       EXPECT_NE(r.message.find("not implemented yet"), std::string::npos) << r.message;
     }
   }
-}
-
-// Coulomb friction at contact points is 2D only: in 3D it is refused at FROTTEMENT (CONTACT_20).
-TEST(ContinuousIntegrationRule, FrictionAtPointsIn3DIsRefused) {
-  std::string comm = pointPatchComm(true, ", COULOMB=0.2, INTEGRATION='GAUSS'", 1e-8);
-  const std::string formulation = "FORMULATION='CONTINUE',";
-  comm.replace(comm.find(formulation), formulation.size(), formulation + " FROTTEMENT='COULOMB',");
-  const StudyRun r = runStudyIn("stella_contact_integration", "refused3d",
-                                testing::twoBlocks(CellType::HEXA8, 2, 2, 0.002), comm, true);
-  EXPECT_FALSE(passed(r));
-  EXPECT_NE(r.message.find("FROTTEMENT='COULOMB' in 3D with INTEGRATION other than 'AUTO'"),
-            std::string::npos)
-      << r.message;
-  EXPECT_NE(r.message.find("not implemented yet"), std::string::npos) << r.message;
 }
 
 } // namespace
