@@ -311,5 +311,30 @@ TEST(ContinuousIntegrationRule, WhatThePointsDoNotImplementIsRefused) {
   }
 }
 
+// Coulomb friction at points in 3D against symmetry planes (notice §4.7): the slave block's faces
+// x = 0 and y = 0 hold DX and DY of both blocks, so the weighted slip conditions of the slave nodes
+// there (coupled through their cells' points) repeat the symmetry: CONTACT_11 (redundant). With those
+// nodes in SANS_GROUP_NO_FR the points of their cells carry no friction, the conditions left are
+// independent, and the two blocks of one material, expanding alike under the uniform pressure (no
+// relative slip), reproduce the frictionless patch test exactly.
+TEST(ContinuousIntegrationRule, FrictionAtPointsAgainstSymmetryPlanesNeedsSansGroupNoFr) {
+  for (const bool excluded : {true, false}) {
+    const std::string zone = std::string(", COULOMB=0.2, INTEGRATION='GAUSS'") +
+                             (excluded ? ", SANS_GROUP_NO_FR=('B_XMIN', 'B_YMIN')" : "");
+    std::string comm = pointPatchComm(true, zone, 1e-8);
+    const std::string formulation = "FORMULATION='CONTINUE',";
+    comm.replace(comm.find(formulation), formulation.size(), formulation + " FROTTEMENT='COULOMB',");
+    const StudyRun r =
+        runStudyIn("stella_contact_integration", excluded ? "symmetry_fr" : "symmetry_redundant",
+                   testing::twoBlocks(CellType::HEXA8, 4, 4, 0.002), comm, !excluded);
+    if (excluded) {
+      EXPECT_TRUE(passed(r)) << r.message;
+    } else {
+      EXPECT_FALSE(passed(r));
+      EXPECT_NE(r.message.find("CONTACT_11"), std::string::npos) << r.message;
+    }
+  }
+}
+
 } // namespace
 } // namespace stella::contact
