@@ -66,7 +66,8 @@ TEST(CatalogSupport, EveryRefusalOfTheIssueIsFound) {
         "SUIVI_DDL=_F(NOM_CHAM='DEPL', NOM_CMP='DX', TOUT='OUI', EVAL_CMP='FORMULE', FORMULE=RAMPE))",
         "SUIVI_DDL=_F(NOM_CHAM='FORC_NODA', NOM_CMP='DX', TOUT='OUI'))",
         "OBSERVATION=_F(NOM_CHAM='VITE', NOM_CMP='DX', TOUT='OUI'))",
-        "COMPORTEMENT=_F(RELATION='ELAS', DEFORMATION='GROT_GDEP', TOUT='OUI'))",
+        "COMPORTEMENT=_F(RELATION='VMIS_ISOT_LINE', DEFORMATION='GROT_GDEP', TOUT='OUI'))",
+        "COMPORTEMENT=_F(RELATION='ELAS', DEFORMATION='SIMO_MIEHE', TOUT='OUI'))",
         "RECH_LINEAIRE=_F(METHODE='MIXTE'))", "ETAT_INIT=_F(DEPL=MO))", "CRIT_STAB=_F())"}) {
     auto ds = refusals(line);
     bool found = std::any_of(ds.begin(), ds.end(), [](const Diagnostic& d) { return d.id == "CATALOG_17"; });
@@ -78,6 +79,18 @@ TEST(CatalogSupport, ImplementedKeywordsPass) {
   EXPECT_TRUE(refusals("NEWTON=_F(REAC_INCR=1, MATRICE='ELASTIQUE'), ARCHIVAGE=_F(PAS_ARCH=2))").empty());
   EXPECT_TRUE(
       refusals("SUIVI_DDL=_F(NOM_CHAM='DEPL', NOM_CMP='DX', TOUT='OUI', EVAL_CHAM='MAX'), INFO=1)").empty());
+  // GROT_GDEP is implemented with ELAS only (the relation's block of COMPORTEMENT)
+  EXPECT_TRUE(refusals("COMPORTEMENT=_F(RELATION='ELAS', DEFORMATION='GROT_GDEP', TOUT='OUI'))").empty());
+  EXPECT_TRUE(refusals("COMPORTEMENT=_F(DEFORMATION='GROT_GDEP', TOUT='OUI'))").empty());
+}
+
+TEST(CatalogSupport, GrotGdepWithAnotherRelationIsRefusedAtDeformation) {
+  auto ds = refusals("COMPORTEMENT=_F(RELATION='VMIS_ISOT_LINE', DEFORMATION='GROT_GDEP', TOUT='OUI'))");
+  ASSERT_EQ(ds.size(), 1u);
+  EXPECT_EQ(ds.front().id, "CATALOG_17");
+  EXPECT_NE(ds.front().message.find("DEFORMATION='GROT_GDEP'"), std::string::npos) << ds.front().message;
+  EXPECT_EQ(ds.front().location.line, kSecondLine);
+  EXPECT_EQ(ds.front().location.column, 60); // the value 'GROT_GDEP'
 }
 
 TEST(CatalogSupport, DefiListInstRefusalsAreCatalogueMarks) {

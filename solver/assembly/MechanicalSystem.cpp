@@ -26,9 +26,11 @@ MechanicalSystem::MechanicalSystem(std::shared_ptr<const Model> model,
                                    std::shared_ptr<const MaterialField> materials,
                                    std::vector<Excitation> excitations,
                                    const std::vector<std::string>& relations, const SourceLocation& at,
-                                   std::shared_ptr<const ElementCharacteristics> cara)
+                                   std::shared_ptr<const ElementCharacteristics> cara,
+                                   std::vector<fem::StrainMeasure> strains)
     : model_(std::move(model)), materials_(std::move(materials)), cara_(std::move(cara)),
-      excitations_(std::move(excitations)), dofs_(*model_), behaviours_(*model_, *materials_, relations, at),
+      excitations_(std::move(excitations)), dofs_(*model_),
+      behaviours_(*model_, *materials_, relations, at, std::move(strains)),
       assembler_(*model_, dofs_, behaviours_, cara_.get()) {
   if (cara_ && cara_->model.get() != model_.get()) {
     throw UserError(Diagnostic::fatal("CARA_6", "CARA_ELEM was defined on another model than MODELE", at)

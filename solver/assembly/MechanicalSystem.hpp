@@ -23,10 +23,12 @@ public:
   // excitation's load was built on another model, SOLVE_4 when one DOF is imposed twice by
   // elimination with different multipliers. `cara` (CARA_ELEM, may be null) gives the stiffness
   // of the discrete springs: CARA_5 when a discrete element of the model has none, CARA_6 when
-  // it was built on another model.
+  // it was built on another model. `strains[c]` (empty: PETIT everywhere): the strain measure of
+  // each cell (COMPORTEMENT DEFORMATION).
   MechanicalSystem(std::shared_ptr<const Model> model, std::shared_ptr<const MaterialField> materials,
                    std::vector<Excitation> excitations, const std::vector<std::string>& relations,
-                   const SourceLocation& at, std::shared_ptr<const ElementCharacteristics> cara = nullptr);
+                   const SourceLocation& at, std::shared_ptr<const ElementCharacteristics> cara = nullptr,
+                   std::vector<fem::StrainMeasure> strains = {});
 
   const Model& model() const { return *model_; }
   const DofMap& dofs() const { return dofs_; }

@@ -2,13 +2,33 @@
 
 #include "solver/assembly/NodalForces.hpp"
 
+#include "interpreter/Diagnostics.hpp"
 #include "solver/assembly/VolumeAssembler.hpp"
 #include "solver/fem/ElementMatrices.hpp"
 #include "solver/fem/Kinematics.hpp"
 
 namespace stella {
 
-Eigen::VectorXd forcesFromStress(const Model& model, const DofMap& dofs, const Field& stress) {
+namespace {
+
+// The displacements of a cell's nodes (node by node) read from a DEPL field.
+Eigen::VectorXd cellDisplacement(const Model& model, CellId c, int dim, const Field& depl) {
+  const auto nodes = model.mesh->cellNodes(c);
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(nodes.size()) * dim);
+  for (int k = 0; k < dim; ++k) {
+    const auto cmp = depl.componentIndex(Model::componentName(k));
+    STELLA_ASSERT(cmp.has_value(), "DEPL without a displacement component");
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      u(static_cast<Eigen::Index>(i) * dim + k) = depl.value(static_cast<std::size_t>(nodes[i]), *cmp);
+    }
+  }
+  return u;
+}
+
+} // namespace
+
+Eigen::VectorXd forcesFromStress(const Model& model, const DofMap& dofs, const Field& stress,
+                                 const std::vector<fem::StrainMeasure>* strains, const Field* depl) {
   const Mesh& mesh = *model.mesh;
   const int dim = dofs.components();
   Eigen::VectorXd f = Eigen::VectorXd::Zero(dofs.physicalCount());
@@ -24,6 +44,15 @@ Eigen::VectorXd forcesFromStress(const Model& model, const DofMap& dofs, const F
       const auto s = stress.entity(first + static_cast<std::size_t>(q));
       sigmas[static_cast<std::size_t>(q)] =
           Eigen::Map<const Eigen::VectorXd>(s.data(), static_cast<Eigen::Index>(s.size()));
+    }
+    if (strains != nullptr && (*strains)[static_cast<std::size_t>(c)] == fem::StrainMeasure::GreenLagrange) {
+      STELLA_ASSERT(depl != nullptr, "GROT_GDEP forces without DEPL");
+      const Eigen::VectorXd u = cellDisplacement(model, c, dim, *depl);
+      for (int q = 0; q < kin.pointCount(); ++q) { // B_F^T S
+        const Eigen::MatrixXd g = fem::referenceGradients(kin, q);
+        kin.b[static_cast<std::size_t>(q)] =
+            fem::greenLagrangeVariation(kin, g, fem::deformationGradient(kin, g, u));
+      }
     }
     fem::internalForces(kin, sigmas, fe);
     const auto nodes = mesh.cellNodes(c);

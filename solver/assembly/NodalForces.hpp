@@ -5,11 +5,16 @@
 
 #include "solver/assembly/DofMap.hpp"
 #include "solver/database/Field.hpp"
+#include "solver/fem/GreenLagrange.hpp"
 
 #include <Eigen/Dense>
 
 namespace stella {
 
-Eigen::VectorXd forcesFromStress(const Model& model, const DofMap& dofs, const Field& stress);
+// B^T sigma summed over the volume cells. A cell whose `strains` entry (null: all PETIT) is
+// GROT_GDEP gets B_F^T S, B_F at the displacement `depl` (a DEPL field, required then).
+Eigen::VectorXd forcesFromStress(const Model& model, const DofMap& dofs, const Field& stress,
+                                 const std::vector<fem::StrainMeasure>* strains = nullptr,
+                                 const Field* depl = nullptr);
 
 } // namespace stella

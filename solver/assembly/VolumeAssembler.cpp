@@ -4,6 +4,7 @@
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/fem/ElementMatrices.hpp"
+#include "solver/fem/GreenLagrange.hpp"
 #include "solver/fem/Kinematics.hpp"
 
 #include <fmt/format.h>
@@ -80,6 +81,31 @@ std::string degenerateCellMessage(const Mesh& mesh, CellId c, const fem::Degener
                      e.jacobian(), e.gaussPoint() + 1);
 }
 
+// GROT_GDEP at the points of one cell: element displacements at the start and end of the step,
+// and the reference gradients of each point (for the geometric stiffness).
+struct LargeDisplacementCell {
+  Eigen::VectorXd uStart;
+  Eigen::VectorXd uEnd;
+  std::vector<Eigen::MatrixXd> gradients;
+};
+
+// The strain increment at point q: B du (PETIT), or E(uEnd) - E(uStart) (GROT_GDEP, `large` not
+// null), in which case kin.b[q] becomes B_F at the end of the step (or at its start when the option
+// does not integrate: the prediction's tangent), so that the element integrals below use it.
+Eigen::VectorXd strainIncrement(fem::ElementKinematics& kin, int q, const Eigen::VectorXd& due,
+                                LargeDisplacementCell* large, behaviour::Option option) {
+  if (large == nullptr) {
+    return fem::strainAt(kin, q, due);
+  }
+  const Eigen::MatrixXd g = fem::referenceGradients(kin, q);
+  const Eigen::Matrix3d f0 = fem::deformationGradient(kin, g, large->uStart);
+  const Eigen::Matrix3d f1 = fem::deformationGradient(kin, g, large->uEnd);
+  kin.b[static_cast<std::size_t>(q)] =
+      fem::greenLagrangeVariation(kin, g, behaviour::integrates(option) ? f1 : f0);
+  large->gradients[static_cast<std::size_t>(q)] = g;
+  return fem::greenLagrangeStrain(kin.modelling, f1) - fem::greenLagrangeStrain(kin.modelling, f0);
+}
+
 } // namespace
 
 AssemblyStatus VolumeAssembler::run(const Eigen::VectorXd& uStart, const Eigen::VectorXd& du,
@@ -94,6 +120,7 @@ AssemblyStatus VolumeAssembler::run(const Eigen::VectorXd& uStart, const Eigen::
   std::vector<Eigen::MatrixXd> tangents;
   Eigen::MatrixXd ke;
   Eigen::VectorXd fe;
+  LargeDisplacementCell large;
   const bool wantMatrix = out.matrix != nullptr || out.stiffness != nullptr;
   for (std::size_t index = 0; index < cells_.size(); ++index) {
     const CellId c = cells_[index];
@@ -112,6 +139,14 @@ AssemblyStatus VolumeAssembler::run(const Eigen::VectorXd& uStart, const Eigen::
     }
     cellDofs(c, dofs);
     const Eigen::VectorXd due = gather(du, dofs);
+    // GROT_GDEP; the elastic matrix (MATRICE='ELASTIQUE') is the small-strain one of the reference
+    const bool largeCell = behaviours_.strainMeasure(c) == fem::StrainMeasure::GreenLagrange &&
+                           option != behaviour::Option::ElasticTangent;
+    if (largeCell) {
+      large.uStart = gather(uStart, dofs);
+      large.uEnd = large.uStart + due;
+      large.gradients.resize(static_cast<std::size_t>(kin.pointCount()));
+    }
     const behaviour::Behaviour& b = *behaviours_.of(c);
     const auto nv = static_cast<std::size_t>(b.internalVariableCount());
     stresses.resize(static_cast<std::size_t>(kin.pointCount()));
@@ -119,7 +154,7 @@ AssemblyStatus VolumeAssembler::run(const Eigen::VectorXd& uStart, const Eigen::
     const std::size_t first = start.stress.firstPoint(static_cast<std::size_t>(c));
     for (int q = 0; q < kin.pointCount(); ++q) {
       const std::size_t p = first + static_cast<std::size_t>(q);
-      Eigen::VectorXd deps = fem::strainAt(kin, q, due);
+      Eigen::VectorXd deps = strainIncrement(kin, q, due, largeCell ? &large : nullptr, option);
       Eigen::VectorXd sigma(ns);
       std::vector<double> vari(nv, 0.0);
       auto& t = tangents[static_cast<std::size_t>(q)];
@@ -154,6 +189,10 @@ AssemblyStatus VolumeAssembler::run(const Eigen::VectorXd& uStart, const Eigen::
     }
     if (wantMatrix) {
       fem::stiffness(kin, tangents, ke);
+      for (int q = 0; largeCell && q < kin.pointCount(); ++q) {
+        const auto uq = static_cast<std::size_t>(q);
+        fem::addGeometricStiffness(kin, large.gradients[uq], stresses[uq], kin.weights[uq], ke);
+      }
     }
     if (out.stiffness != nullptr) {
       out.stiffness->addCell(index, ke);

@@ -1,6 +1,8 @@
 #pragma once
 // The loop over the model's volume cells: kinematics, behaviour integration at every Gauss
-// point, element internal forces B^T sigma and tangents B^T D B, scattered into global vectors
+// point, element internal forces B^T sigma and tangents B^T D B (a GROT_GDEP cell, CellBehaviours::
+// strainMeasure: Green-Lagrange strain, B_F^T S and B_F^T D B_F + the geometric stiffness, total
+// Lagrangian, fem/GreenLagrange.hpp), scattered into global vectors
 // and into the stiffness matrix in place (StiffnessMatrix: precomputed positions; or as triplets,
 // the slow path kept for small tests) (physical DOFs only); then the discrete springs (AFFE_CARA_ELEM
 // K_T_D_N), whose constant stiffness k adds k to the matrix and k (uStart + du) to the internal forces.

@@ -46,8 +46,12 @@ std::unique_ptr<behaviour::Behaviour> makeBehaviour(const Material& m, const std
 } // namespace
 
 CellBehaviours::CellBehaviours(const Model& model, const MaterialField& materials,
-                               const std::vector<std::string>& relations, const SourceLocation& at) {
+                               const std::vector<std::string>& relations, const SourceLocation& at,
+                               std::vector<fem::StrainMeasure> strains)
+    : strains_(std::move(strains)) {
   const Mesh& mesh = *model.mesh;
+  largeDisplacements_ =
+      std::find(strains_.begin(), strains_.end(), fem::StrainMeasure::GreenLagrange) != strains_.end();
   cells_.assign(static_cast<std::size_t>(mesh.cellCount()), nullptr);
   for (CellId c = 0; c < mesh.cellCount(); ++c) {
     if (model.cell(c).kind != ElementKind::Volume) {

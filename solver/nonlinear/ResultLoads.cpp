@@ -2,6 +2,7 @@
 
 #include "solver/nonlinear/ResultLoads.hpp"
 
+#include <algorithm>
 #include <map>
 
 namespace stella {
@@ -25,6 +26,16 @@ struct CaraEntry {
 
 std::map<const Result*, CaraEntry>& caraRegistry() {
   static std::map<const Result*, CaraEntry> r;
+  return r;
+}
+
+struct StrainEntry {
+  std::weak_ptr<Result> result;
+  std::vector<fem::StrainMeasure> strains;
+};
+
+std::map<const Result*, StrainEntry>& strainRegistry() {
+  static std::map<const Result*, StrainEntry> r;
   return r;
 }
 
@@ -53,6 +64,22 @@ std::shared_ptr<const ElementCharacteristics> rememberedCharacteristics(const Re
     return nullptr;
   }
   return it->second.cara;
+}
+
+void rememberStrainMeasures(const std::shared_ptr<Result>& result, std::vector<fem::StrainMeasure> strains) {
+  if (std::find(strains.begin(), strains.end(), fem::StrainMeasure::GreenLagrange) == strains.end()) {
+    strainRegistry().erase(result.get());
+    return;
+  }
+  strainRegistry()[result.get()] = StrainEntry{result, std::move(strains)};
+}
+
+const std::vector<fem::StrainMeasure>* rememberedStrainMeasures(const Result& result) {
+  auto it = strainRegistry().find(&result);
+  if (it == strainRegistry().end() || it->second.result.expired()) {
+    return nullptr;
+  }
+  return &it->second.strains;
 }
 
 } // namespace stella

@@ -244,7 +244,8 @@ struct ForceContext {
   const DofMap dofs;
   const std::vector<Excitation>* loads;
   const MaterialField* materials;
-  const ElementCharacteristics* cara; // springs, or null
+  const ElementCharacteristics* cara;             // springs, or null
+  const std::vector<fem::StrainMeasure>* strains; // GROT_GDEP cells (null: PETIT everywhere)
   std::vector<Eigen::VectorXd> cache;
 };
 
@@ -284,7 +285,15 @@ void computeForces(ForceContext& ctx, ResultStep& step, const std::vector<std::s
                     step.number),
         kw.locationOf("FORCE")));
   }
-  Eigen::VectorXd forc = forcesFromStress(ctx.model, ctx.dofs, *sief);
+  const Field* depl = step.field("DEPL");
+  if (ctx.strains != nullptr && (depl == nullptr || depl->support() != FieldSupport::Node)) {
+    throw UserError(Diagnostic::fatal(
+        "CALC_4",
+        fmt::format("result {} has no DEPL at NUME_ORDRE {}: the forces of its GROT_GDEP cells need it", name,
+                    step.number),
+        kw.locationOf("FORCE")));
+  }
+  Eigen::VectorXd forc = forcesFromStress(ctx.model, ctx.dofs, *sief, ctx.strains, depl);
   addSpringForces(ctx, step, name, kw, forc);
   for (const auto& option : options) {
     if (option == "FORC_NODA") {
@@ -352,9 +361,10 @@ Value runCalcChamp(OperatorCall& call) {
   std::unique_ptr<ForceContext> forces;
   const auto* loads = rememberedLoads(*source);
   auto cara = characteristics(kw, *source, *model);
+  const std::vector<fem::StrainMeasure>* strains = rememberedStrainMeasures(*source);
   if (!forceOptions.empty()) {
     forces = std::make_unique<ForceContext>(
-        ForceContext{*model, DofMap(*model), loads, materials.get(), cara.get(), {}});
+        ForceContext{*model, DofMap(*model), loads, materials.get(), cara.get(), strains, {}});
   }
   std::set<std::string> intermediates;
   for (ResultStep* step : steps) {
@@ -376,6 +386,9 @@ Value runCalcChamp(OperatorCall& call) {
   }
   if (!call.reused) {
     rememberCharacteristics(result, rememberedCharacteristics(*source));
+    if (strains != nullptr) {
+      rememberStrainMeasures(result, *strains);
+    }
   }
   call.session.message() << fmt::format("  CALC_CHAMP: {} stored on {} step(s) of {}",
                                         fmt::join(options, ", "), steps.size(), concept_->name);

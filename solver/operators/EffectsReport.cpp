@@ -29,8 +29,13 @@ std::vector<std::string> behaviourLines(const KeywordTree& kw, const MechanicalS
     const std::string where = occ.has("GROUP_MA")
                                   ? fmt::format("GROUP_MA=({})", fmt::join(occ.texts("GROUP_MA"), ", "))
                                   : std::string("TOUT='OUI'");
-    lines.push_back(fmt::format("behaviour {} on {} ({} cell(s)): {}, strains {} [COMPORTEMENT {}]", relation,
-                                where, cells.size(), integrationOf(relation), occ.text("DEFORMATION"),
+    const std::string deformation = occ.text("DEFORMATION");
+    lines.push_back(fmt::format("behaviour {} on {} ({} cell(s)): {}, strains {}{} [COMPORTEMENT {}]",
+                                relation, where, cells.size(), integrationOf(relation), deformation,
+                                deformation == "GROT_GDEP"
+                                    ? " (total Lagrangian: Green-Lagrange strain, PK2 stress in SIEF_ELGA, "
+                                      "geometric stiffness in the tangent)"
+                                    : "",
                                 index));
   }
   std::size_t rest = 0;

@@ -43,16 +43,26 @@ namespace stella {
 
 namespace {
 
-// The relation of each cell. A relation whose material lacks its parameters is refused at the
-// RELATION keyword that gives it (MATER_8), not at the command's name.
-std::vector<std::string> relationsOf(const KeywordTree& kw, const Model& model,
-                                     const MaterialField& materials) {
-  std::vector<std::string> relations(model.cells.size(), "ELAS");
+// The relation and the strain measure (DEFORMATION) of each cell. A relation whose material lacks
+// its parameters is refused at the RELATION keyword that gives it (MATER_8), not at the command's
+// name; GROT_GDEP (the catalogue allows it with ELAS only) on a mean-dilatation cell at DEFORMATION.
+struct CellLaws {
+  std::vector<std::string> relations;
+  std::vector<fem::StrainMeasure> strains;
+};
+
+CellLaws cellLawsOf(const KeywordTree& kw, const Model& model, const MaterialField& materials) {
+  CellLaws laws{std::vector<std::string>(model.cells.size(), "ELAS"),
+                std::vector<fem::StrainMeasure>(model.cells.size(), fem::StrainMeasure::Small)};
   for (const KeywordTree& occ : kw.occurrences("COMPORTEMENT")) {
-    // RELATION and DEFORMATION: the catalogue implements ELAS, VMIS_ISOT_LINE and PETIT only.
+    // RELATION and DEFORMATION: the catalogue implements ELAS, VMIS_ISOT_LINE, PETIT and, with
+    // ELAS, GROT_GDEP only.
     const std::string relation = occ.text("RELATION");
+    const bool large = occ.text("DEFORMATION") == "GROT_GDEP";
     for (CellId c : selectCells(*model.mesh, occ)) {
-      relations[static_cast<std::size_t>(c)] = relation;
+      laws.relations[static_cast<std::size_t>(c)] = relation;
+      laws.strains[static_cast<std::size_t>(c)] =
+          large ? fem::StrainMeasure::GreenLagrange : fem::StrainMeasure::Small;
       const Material* m = materials.material(c);
       if (relation == "VMIS_ISOT_LINE" && model.cell(c).kind == ElementKind::Volume && m != nullptr &&
           !m->hardening) {
@@ -64,9 +74,21 @@ std::vector<std::string> relationsOf(const KeywordTree& kw, const Model& model,
                               occ.locationOf("RELATION"))
                 .withNote("add ECRO_LINE=_F(D_SIGM_EPSI=..., SY=...) to DEFI_MATERIAU"));
       }
+      if (large && model.cell(c).kind == ElementKind::Volume &&
+          model.cell(c).volumeStrain == fem::VolumeStrain::CellMean) {
+        throw UserError(
+            Diagnostic::fatal(
+                "SNL_13",
+                fmt::format("DEFORMATION='GROT_GDEP' on the mean-dilatation cell {} (MODELISATION "
+                            "'{}_SI') is not implemented yet",
+                            model.mesh->cellName(c), fem::modellingName(model.cell(c).modelling)),
+                occ.locationOf("DEFORMATION"))
+                .withNote("use the fully integrated modelisation (3D, D_PLAN, AXIS) with GROT_GDEP, or "
+                          "DEFORMATION='PETIT'"));
+      }
     }
   }
-  return relations;
+  return laws;
 }
 
 // The result to fill: the reused one (steps from the first computed instant on are replaced,
@@ -139,9 +161,10 @@ std::string effectsLine(const MechanicalSystem& system, const NewtonSettings& se
                         const StepConstraint* constraint, const CutPolicy& cuts) {
   const bool linear = system.behaviours().allLinear();
   return fmt::format(
-      "   effects: {}, {} load(s), {} {} factorisation, {} Lagrange multiplier(s), {}{}, step cutting {}\n",
+      "   effects: {}{}, {} load(s), {} {} factorisation, {} Lagrange multiplier(s), {}{}, step cutting {}\n",
       linear ? "elasticity (no return mapping)"
              : fmt::format("{} (return mapping)", fmt::join(system.behaviours().relationNames(), ", ")),
+      system.behaviours().largeDisplacements() ? " in large displacements (GROT_GDEP)" : "",
       system.excitations().size(),
       settings.symmetrizeTangent           ? "symmetric (MATR_RIGI_SYME: (K + K^T) / 2)"
       : system.behaviours().allSymmetric() ? "symmetric"
@@ -158,8 +181,9 @@ Value runStatNonLine(OperatorCall& call) {
   auto model = readModel(kw);
   auto materials = readMaterialField(kw, *model);
   const auto commandStart = std::chrono::steady_clock::now();
-  MechanicalSystem system(model, materials, readExcitations(kw), relationsOf(kw, *model, *materials),
-                          call.location, readCaraElem(kw));
+  CellLaws laws = cellLawsOf(kw, *model, *materials);
+  MechanicalSystem system(model, materials, readExcitations(kw), laws.relations, call.location,
+                          readCaraElem(kw), laws.strains);
   system.phases().numbering +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - commandStart).count();
   system.solver().setOptions(readSolverOptions(kw));
@@ -215,6 +239,7 @@ Value runStatNonLine(OperatorCall& call) {
   }
   rememberLoads(result, system.excitations());
   rememberCharacteristics(result, readCaraElem(kw));
+  rememberStrainMeasures(result, system.behaviours().strainMeasures());
   Value made = call.makeConcept(result);
   observations.attach(*result);
   measures.attach(*result);

@@ -4,7 +4,7 @@
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/assembly/MechanicalSystem.hpp"
-#include "solver/fem/BoxMesh.hpp"
+#include "solver/assembly/tests/BoxStudy.hpp"
 #include "solver/model/ModelBuilder.hpp"
 #include "solver/nonlinear/ElasticSolve.hpp"
 
@@ -17,20 +17,7 @@ namespace {
 
 std::shared_ptr<Mesh> boxOf(CellType type, int n) {
   const bool threeD = dimension(type) == 3;
-  const fem::PlainMesh p = fem::boxMesh(type, {n, n + 1, threeD ? n : 1}, {1.0, 1.2, 0.8});
-  auto mesh = std::make_shared<Mesh>();
-  mesh->setDimension(p.dimension);
-  for (int i = 0; i < p.nodeCount(); ++i) {
-    Point3 x{0, 0, 0};
-    for (int d = 0; d < p.dimension; ++d) {
-      x[static_cast<std::size_t>(d)] = p.coordinates(i, d);
-    }
-    mesh->addNode(x);
-  }
-  for (int c = 0; c < p.cellCount(); ++c) {
-    mesh->addCell(p.cellType, std::span<const NodeId>(p.cell(c), static_cast<std::size_t>(p.nodesPerCell())));
-  }
-  return mesh;
+  return testing::meshOfBox(fem::boxMesh(type, {n, n + 1, threeD ? n : 1}, {1.0, 1.2, 0.8}));
 }
 
 struct Study {
@@ -73,13 +60,7 @@ Study study(CellType type, int n, bool eliminate, bool hold = true) {
       load->nodalForces.push_back({node, 1, 1.0});
     }
   }
-  auto material = std::make_shared<Material>();
-  material->name = "STEEL";
-  material->elastic = ElasticMaterial{210000.0, 0.3, {}, {}};
-  auto field = std::make_shared<MaterialField>();
-  field->mesh = s.mesh;
-  field->materials.push_back(material);
-  field->cellMaterial.assign(static_cast<std::size_t>(s.mesh->cellCount()), 0);
+  auto field = testing::elasticOn(s.mesh, 210000.0, 0.3);
   std::vector<Excitation> ex{{load, nullptr, nullptr}};
   if (eliminate) {
     ex.push_back({nullptr, kin, nullptr});

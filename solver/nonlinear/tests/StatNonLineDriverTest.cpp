@@ -380,6 +380,25 @@ TEST(StatNonLineDriver, RelationWithoutItsMaterialParametersIsLocatedAtRelation)
       << run->mess();
 }
 
+// GROT_GDEP on a mean-dilatation (3D_SI) cell: not implemented, refused at DEFORMATION (line 18,
+// column 52) with SNL_13, before anything is computed.
+TEST(StatNonLineDriver, GrotGdepOnMeanDilatationCellsIsRefusedAtDeformation) {
+  const std::string comm =
+      kPreamble +
+      "MOSI = AFFE_MODELE(MAILLAGE=M, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', "
+      "MODELISATION='3D_SI'))\n"
+      "TIMES = DEFI_LIST_REEL(VALE=(0.0, 1.0))\n"
+      "R = STAT_NON_LINE(MODELE=MOSI, CHAM_MATER=CM, EXCIT=_F(CHARGE=BC), INCREMENT=_F(LIST_INST=TIMES),\n"
+      "                  COMPORTEMENT=_F(RELATION='ELAS', DEFORMATION='GROT_GDEP', TOUT='OUI'))\n"
+      "FIN()\n";
+  auto run = runStudy("grot_si", comm, kMesh);
+  EXPECT_EQ(run->failure(), FailureKind::Error);
+  EXPECT_NE(run->mess().find("SNL_13"), std::string::npos) << run->mess();
+  EXPECT_NE(run->mess().find(":18:52: error: DEFORMATION='GROT_GDEP' on the mean-dilatation cell"),
+            std::string::npos)
+      << run->mess();
+}
+
 TEST(StatNonLineDriver, NumeInstWindow) {
   const std::string comm = kPreamble + R"(
 TIMES = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=2.0, NOMBRE=8))
