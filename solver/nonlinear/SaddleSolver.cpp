@@ -87,6 +87,15 @@ double meanDiagonal(const StiffnessMatrix& k) {
   return count > 0 ? sum / count : 1.0;
 }
 
+// SOLVE_2: the backend failed (a factorisation, or an iterative solve that did not converge).
+UserError solverFailure(const linalg::LinearSolverError& e) {
+  return UserError(
+      Diagnostic::fatal("SOLVE_2", fmt::format("the linear solver failed: {}", e.what()))
+          .withNote("an iterative SOLVEUR (GCPC, PETSC) that does not converge: raise NMAX_ITER, "
+                    "choose another PRE_COND, or tune it with OPTION_PETSC; or use "
+                    "METHODE='MUMPS' (the default)"));
+}
+
 bool samePattern(const linalg::SparsePattern& a, const linalg::SparsePattern& b) {
   return a.size == b.size && a.storage == b.storage && a.rowStart == b.rowStart && a.columns == b.columns;
 }
@@ -370,8 +379,7 @@ void SaddleSolver::factorize(const StiffnessMatrix& k, bool symmetric) {
             .withNote("block the free motions with DDL_IMPO or AFFE_CHAR_CINE, or hold the body with DIS_T "
                       "springs (§4.4.2 of the notice); check that no linear relation repeats another"));
   } catch (const linalg::LinearSolverError& e) {
-    throw UserError(Diagnostic::fatal("SOLVE_2", fmt::format("the linear solver failed: {}", e.what()))
-                        .withNote("try METHODE='MUMPS' (the default) in SOLVEUR"));
+    throw solverFailure(e);
   }
   ++factorizations_;
 }
@@ -446,7 +454,12 @@ void SaddleSolver::solveHomogeneous(Eigen::Ref<Eigen::MatrixXd> rhs) {
 
 void SaddleSolver::solveBordered(Eigen::Ref<Eigen::MatrixXd> x) {
   const auto start = Clock::now();
-  solver_->solve(x);
+  try {
+    solver_->solve(x);
+  } catch (const linalg::LinearSolverError& e) {
+    // an iterative solve that did not converge: the user's SOLVEUR, not an internal error
+    throw solverFailure(e);
+  }
   timings_.solve += secondsSince(start);
   if (!x.allFinite()) {
     throw UserError(Diagnostic::fatal("SOLVE_3", "the linear solve produced non-finite values")

@@ -1,6 +1,7 @@
 // The in-place assembly of K (StiffnessMatrix) against the triplet assembly, entry for entry; the
 // growing extra pattern of couplings outside the cells and the re-analysis it triggers in the
-// SaddleSolver; singular stiffness found by the backends (no pre-check) and still named.
+// SaddleSolver; singular stiffness found by the backends (no pre-check) and still named; an
+// iterative solve that does not converge is the user's SOLVE_2, not an internal error.
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/assembly/MechanicalSystem.hpp"
@@ -220,6 +221,27 @@ TEST(StiffnessMatrix, SingularStiffnessIsFoundByTheBackendAndNamed) {
         EXPECT_NE(d.message.find("component DY is free"), std::string::npos) << method << ": " << d.message;
       }
     }
+  }
+}
+
+// An iterative SOLVEUR (GCPC here; PETSC the same) that stops at NMAX_ITER before RESI_RELA: the
+// backend's LinearSolverError becomes SOLVE_2 with the advice, at the solve as at the
+// factorisation (it escaped as an internal error from STAT_NON_LINE's solves before).
+TEST(StiffnessMatrix, IterativeSolveWithoutConvergenceIsSolve2) {
+  Study s = study(CellType::QUAD4, 6, true);
+  linalg::SolverOptions o;
+  o.method = linalg::SolverMethod::Gcpc;
+  o.relativeResidual = 1e-14;
+  o.maxIterations = 1;
+  s.system->solver().setOptions(o);
+  ElasticSolve solve(*s.system);
+  try {
+    solve.solve(0.0, false);
+    ADD_FAILURE() << "one GCPC iteration reached RESI_RELA = 1e-14";
+  } catch (const UserError& e) {
+    const auto& d = e.diagnostics().front();
+    EXPECT_EQ(d.id, "SOLVE_2");
+    EXPECT_NE(d.message.find("no convergence"), std::string::npos) << d.message;
   }
 }
 
