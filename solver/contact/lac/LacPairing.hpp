@@ -52,11 +52,23 @@ struct LacPatchRow {
   // mesh, so that the tangential multipliers keep their meaning from one pairing to the next)
   // projected on the slave face's plane, tau_2 = tau_1 x n_s.
   std::vector<std::vector<std::pair<int, double>>> slipGradients;
+  // ALGO_RESO_GEOM='NEWTON' in 2D (LacPairingOptions::geometricTangent): the exact derivatives with
+  // respect to the nodal positions (through the overlap ends, Gauss points, normals, master points
+  // and Jacobians: LacOverlapTerms.hpp), for the consistent tangent (LacGeometricTangent.cpp).
+  struct Entry {
+    int row = -1;
+    int column = -1;
+    double value = 0.0;
+  };
+  std::vector<std::pair<int, double>> gapDerivative;    // dG_P/du
+  std::vector<std::pair<int, double>> lengthDerivative; // dL_P/du
+  std::vector<Entry> gradientDerivative;                // d(gradient_row)/du_column
 };
 
 struct LacPairingOptions {
   bool axisymmetric = false;
   int gaussPoints = 3;
+  bool geometricTangent = false; // fill the exact derivatives of the rows (2D zones)
 };
 
 // The search margin of a LAC slave cell. The segment and polygon kernels send the slave normals to
