@@ -66,6 +66,7 @@ LacContactConstraint::LacContactConstraint(std::shared_ptr<const ContactDefiniti
     cells.zone = static_cast<int>(z);
     cells.bruteForce = zone.continuous.lacBruteForce;
     cells.currentJacobian = zone.continuous.lacCurrentJacobian;
+    cells.smoothing = definition_->settings.smoothing; // LISSAGE (2D; refused in 3D by makeLac)
     cells.masters = zoneMasterCells(mesh, zone);
     std::map<CellId, int> patchOf;
     for (std::size_t p = 0; p < patches.size(); ++p) {

@@ -39,17 +39,27 @@ struct OverlapSetup {
 };
 
 // `slave`, `master`: current nodes; `initialSlave`: the slave's nodes in the mesh (the weights of
-// TYPE_JACOBIEN='INITIAL').
+// TYPE_JACOBIEN='INITIAL'); `nodalNormals`: LISSAGE='OUI', the outward averaged normals at the
+// slave's nodes (empty: the slave curve's normal). With them the normal at a point is
+// n = sum N_i n_i / |sum N_i n_i|, for the overlap ends, the projections, the gaps and the force;
+// they enter as constants (held fixed in the derivatives).
 template <class T>
 OverlapTerms<T> overlapTerms(const OverlapSetup& s, std::span<const mortar::kernel::Vec2<T>> slave,
                              std::span<const mortar::kernel::Vec2<T>> master,
-                             std::span<const mortar::kernel::Vec2<double>> initialSlave) {
+                             std::span<const mortar::kernel::Vec2<double>> initialSlave,
+                             std::span<const mortar::kernel::Vec2<double>> nodalNormals = {}) {
   namespace k = mortar::kernel;
   using std::sqrt;
   OverlapTerms<T> out;
+  std::array<k::Vec2<T>, 3> smoothed{};
+  for (std::size_t i = 0; i < nodalNormals.size(); ++i) {
+    smoothed[i] = {T(nodalNormals[i][0]), T(nodalNormals[i][1])};
+  }
+  const std::span<const k::Vec2<T>> normals(smoothed.data(), nodalNormals.size());
   T a(0.0);
   T b(0.0);
-  if (!k::coveredInterval<T>(s.slaveType, slave, s.masterType, master, s.minLength, s.grazingCosine, a, b)) {
+  if (!k::coveredInterval<T>(s.slaveType, slave, s.masterType, master, s.minLength, s.grazingCosine, a, b,
+                             normals)) {
     return out;
   }
   out.paired = true;
@@ -57,9 +67,14 @@ OverlapTerms<T> overlapTerms(const OverlapSetup& s, std::span<const mortar::kern
     const T xi = 0.5 * (a + b) + 0.5 * (b - a) * s.gaussX[g];
     const k::Vec2<T> t = k::tangent<T>(s.slaveType, slave, xi);
     const T jt = sqrt(k::dot(t, t));
-    const k::Vec2<T> n = {s.sign * t[1] / jt, -s.sign * t[0] / jt};
+    k::Vec2<T> n = {s.sign * t[1] / jt, -s.sign * t[0] / jt};
+    if (!normals.empty()) {
+      const k::Vec2<T> field = k::normalField<T>(s.slaveType, normals, xi);
+      const T length = sqrt(k::dot(field, field));
+      n = {field[0] / length, field[1] / length};
+    }
     const k::Vec2<T> xs = k::point<T>(s.slaveType, slave, xi);
-    const T xiM = k::projectAlong<T>(s.masterType, master, xs, {t[1] / jt, -t[0] / jt});
+    const T xiM = k::projectAlong<T>(s.masterType, master, xs, n);
     const k::Vec2<T> xm = k::point<T>(s.masterType, master, xiM);
     const T gap = n[0] * (xm[0] - xs[0]) + n[1] * (xm[1] - xs[1]);
     T measure(0.0);

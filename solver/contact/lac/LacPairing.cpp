@@ -122,6 +122,7 @@ void pairZone(const Mesh& mesh, const LacZoneCells& zone, const std::vector<doub
   std::vector<double> gx;
   std::vector<double> gw;
   mortar::kernel::gaussLegendre(options.gaussPoints, gx, gw);
+  const auto smoothed = zone.smoothing ? averagedNormals(mesh, zone, u) : std::map<NodeId, Point2>{};
   for (std::size_t k = 0; k < zone.slaves.size(); ++k) {
     const LacSlaveCell& sc = zone.slaves[k];
     const Segment current = segmentOf(mesh, sc.cell, &u);
@@ -134,13 +135,19 @@ void pairZone(const Mesh& mesh, const LacZoneCells& zone, const std::vector<doub
       row.length += w * measure(zone.currentJacobian ? current : initial, xi, options.axisymmetric);
     }
     const auto slaveNodes = mesh.cellNodes(sc.cell);
+    std::array<Point2, 3> normals{};
+    for (std::size_t i = 0; zone.smoothing && i < slaveNodes.size(); ++i) {
+      normals[i] = smoothed.at(slaveNodes[i]);
+    }
+    const std::span<const Point2> nodalNormals(normals.data(), zone.smoothing ? slaveNodes.size() : 0);
     const auto slaveDual =
         options.geometricTangent ? seeded(current, 0) : std::vector<mortar::kernel::Vec2<Dual>>{};
     for (const int m : candidates.of(k)) {
       const Segment& master = masters[static_cast<std::size_t>(m)];
       const OverlapSetup setup{current.type,         master.type, sc.sign, options.axisymmetric,
                                zone.currentJacobian, gx,          gw};
-      const OverlapTerms<double> t = overlapTerms<double>(setup, current.nodes, master.nodes, initial.nodes);
+      const OverlapTerms<double> t =
+          overlapTerms<double>(setup, current.nodes, master.nodes, initial.nodes, nodalNormals);
       if (!t.paired) {
         continue;
       }
@@ -156,7 +163,7 @@ void pairZone(const Mesh& mesh, const LacZoneCells& zone, const std::vector<doub
       }
       if (options.geometricTangent) {
         const auto masterDual = seeded(master, 6);
-        addDerivatives(overlapTerms<Dual>(setup, slaveDual, masterDual, initial.nodes), eq,
+        addDerivatives(overlapTerms<Dual>(setup, slaveDual, masterDual, initial.nodes, nodalNormals), eq,
                        sums.derivatives[p]);
       }
     }
@@ -164,6 +171,28 @@ void pairZone(const Mesh& mesh, const LacZoneCells& zone, const std::vector<doub
 }
 
 } // namespace
+
+std::map<NodeId, Point2> averagedNormals(const Mesh& mesh, const LacZoneCells& zone,
+                                         const std::vector<double>& u) {
+  std::map<NodeId, Point2> sums;
+  for (const LacSlaveCell& sc : zone.slaves) {
+    const Segment s = segmentOf(mesh, sc.cell, &u);
+    const auto nodes = mesh.cellNodes(sc.cell);
+    constexpr std::array<double, 3> at{-1.0, 1.0, 0.0}; // the nodes' coordinates: ends, then middle
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      const Point2 t = mortar::segmentTangent(s, at[i]);
+      const double j = norm2(t);
+      Point2& n = sums[nodes[i]];
+      n[0] += sc.sign * t[1] / j;
+      n[1] -= sc.sign * t[0] / j;
+    }
+  }
+  for (auto& [node, n] : sums) {
+    const double j = norm2(n);
+    n = {n[0] / j, n[1] / j};
+  }
+  return sums;
+}
 
 double largestZoneDisplacement(const Mesh& mesh, const LacZoneCells& zone, const std::vector<double>& u) {
   double largest = 0.0;

@@ -38,7 +38,16 @@ struct LacZoneCells {
   std::vector<CellId> masters;
   bool bruteForce = false;      // TYPE_APPA='ROBUSTE'
   bool currentJacobian = false; // TYPE_JACOBIEN='ACTUALISE'
+  bool smoothing = false;       // LISSAGE='OUI' (2D): the averaged nodal normals (averagedNormals)
 };
+
+// LISSAGE='OUI' (notice §2.3.2), 2D: at each node of the zone's slave cells the mean of the outward
+// unit normals of the slave cells it belongs to, at the current positions `u` (3 per node),
+// normalised; the normal at a point of a slave cell is then the interpolation of its nodes'
+// normals (LacOverlapTerms.hpp), continuous from cell to cell. On a uniformly faceted circle the
+// nodal normals are the circle's.
+std::map<NodeId, mortar::Point2> averagedNormals(const Mesh& mesh, const LacZoneCells& zone,
+                                                 const std::vector<double>& u);
 
 // One patch's mortar quantities at a configuration.
 struct LacPatchRow {

@@ -82,6 +82,31 @@ template <class T> T projectOnNormalLines(CellType t, std::span<const Vec2<T>> s
   return xi;
 }
 
+// With normals given at the slave's nodes (LISSAGE: the averaged nodal normals), the normal field
+// n(xi) = sum N_i(xi) n_i (not normalised: only its direction matters here), and the slave
+// coordinate whose line along n(xi) passes through p: (p - x(xi)) x n(xi) = 0, by Newton from the
+// geometric normal's answer.
+template <class T> Vec2<T> normalField(CellType t, std::span<const Vec2<T>> normals, const T& xi) {
+  return point(t, normals, xi);
+}
+
+template <class T>
+T projectOnNormalField(CellType t, std::span<const Vec2<T>> s, std::span<const Vec2<T>> normals,
+                       const Vec2<T>& p) {
+  using std::abs;
+  T xi = projectOnNormalLines(t, s, p);
+  for (int it = 0; it < 30; ++it) {
+    const Vec2<T> r = minus(p, point(t, s, xi));
+    const T df = cross(r, tangent(t, normals, xi)) - cross(tangent(t, s, xi), normalField(t, normals, xi));
+    const T step = cross(r, normalField(t, normals, xi)) / df;
+    xi -= step;
+    if (abs(step) < 1e-15) {
+      break;
+    }
+  }
+  return xi;
+}
+
 // The master coordinate where the line through x along n meets the master.
 template <class T>
 T projectAlong(CellType t, std::span<const Vec2<T>> m, const Vec2<T>& x, const Vec2<T>& n) {
@@ -105,9 +130,11 @@ T projectAlong(CellType t, std::span<const Vec2<T>> m, const Vec2<T>& x, const V
 // pass through the master's ends, clipped; ends within `minLength` of a slave end snap to it);
 // false when the master is seen edge-on (|cos| of the chords below `grazingCosine`) or the
 // interval is shorter than 2 minLength.
+// `normals`: the slave's nodal normals (LISSAGE), empty for the normals of the slave curve.
 template <class T>
 bool coveredInterval(CellType slaveType, std::span<const Vec2<T>> slave, CellType masterType,
-                     std::span<const Vec2<T>> master, double minLength, double grazingCosine, T& a, T& b) {
+                     std::span<const Vec2<T>> master, double minLength, double grazingCosine, T& a, T& b,
+                     std::span<const Vec2<T>> normals = {}) {
   using std::abs;
   using std::sqrt;
   (void)masterType;
@@ -118,8 +145,10 @@ bool coveredInterval(CellType slaveType, std::span<const Vec2<T>> slave, CellTyp
   if (!(cosine >= grazingCosine)) {
     return false; // master seen edge-on (or degenerate)
   }
-  a = projectOnNormalLines(slaveType, slave, master[0]);
-  b = projectOnNormalLines(slaveType, slave, master[1]);
+  a = normals.empty() ? projectOnNormalLines(slaveType, slave, master[0])
+                      : projectOnNormalField(slaveType, slave, normals, master[0]);
+  b = normals.empty() ? projectOnNormalLines(slaveType, slave, master[1])
+                      : projectOnNormalField(slaveType, slave, normals, master[1]);
   if (a > b) {
     std::swap(a, b);
   }
