@@ -4,9 +4,10 @@
 // integrated gap G = sum w_q g_q, g_q = n_s . (x_m - x_s), the coefficients of the gap's gradient
 // with the normals and overlaps held fixed c = sum w_q n_s (N_m, -N_s) (the LAC force direction,
 // LacPatchRow::gradient) and of the slip sum w_q tau (N_s, -N_m). With T = double: the pairing's
-// values; with T = ForwardDual<12> seeded on the 12 local coordinates (slave nodes x, y, then
-// master nodes x, y): their exact derivatives with respect to the nodal positions, through the
-// overlap ends, the Gauss points, the normals, the master points and the Jacobians (ALGO_RESO_GEOM
+// values; with T = LacDual seeded on the 12 local coordinates (slave nodes x, y, then master nodes
+// x, y; LISSAGE: then the neighbouring slave nodes): their exact derivatives with respect to the nodal
+// positions, through the overlap ends, the Gauss points, the normals, the master points and the Jacobians
+// (ALGO_RESO_GEOM
 // ='NEWTON' consistent tangent, LacGeometricTangent.cpp).
 
 #include "solver/contact/mortar/ForwardDual.hpp"
@@ -18,6 +19,21 @@
 namespace stella::contact::lac {
 
 inline constexpr int kOverlapCoordinates = 12; // 3 slave nodes + 3 master nodes, x and y
+// LISSAGE: the averaged normals at the slave's nodes also depend on the other nodes of the
+// neighbouring slave cells (at most 2 per end of a SEG3: 4 nodes), seeded after the 12.
+inline constexpr int kNeighbourNodes = 4;
+inline constexpr int kDerivativeCoordinates = kOverlapCoordinates + 2 * kNeighbourNodes;
+using LacDual = mortar::ForwardDual<kDerivativeCoordinates>;
+
+// The outward unit normal (sign (ty, -tx) / |t|) of a slave segment at xi.
+template <class T>
+mortar::kernel::Vec2<T> outwardNormal(CellType t, std::span<const mortar::kernel::Vec2<T>> nodes, double sign,
+                                      double xi) {
+  using std::sqrt;
+  const mortar::kernel::Vec2<T> tan = mortar::kernel::tangent<T>(t, nodes, T(xi));
+  const T j = sqrt(mortar::kernel::dot(tan, tan));
+  return {sign * tan[1] / j, -sign * tan[0] / j};
+}
 
 template <class T> struct OverlapTerms {
   bool paired = false;
@@ -42,20 +58,15 @@ struct OverlapSetup {
 // TYPE_JACOBIEN='INITIAL'); `nodalNormals`: LISSAGE='OUI', the outward averaged normals at the
 // slave's nodes (empty: the slave curve's normal). With them the normal at a point is
 // n = sum N_i n_i / |sum N_i n_i|, for the overlap ends, the projections, the gaps and the force;
-// they enter as constants (held fixed in the derivatives).
+// with T = LacDual their derivatives come with them (LacSmoothing.hpp).
 template <class T>
 OverlapTerms<T> overlapTerms(const OverlapSetup& s, std::span<const mortar::kernel::Vec2<T>> slave,
                              std::span<const mortar::kernel::Vec2<T>> master,
                              std::span<const mortar::kernel::Vec2<double>> initialSlave,
-                             std::span<const mortar::kernel::Vec2<double>> nodalNormals = {}) {
+                             std::span<const mortar::kernel::Vec2<T>> normals = {}) {
   namespace k = mortar::kernel;
   using std::sqrt;
   OverlapTerms<T> out;
-  std::array<k::Vec2<T>, 3> smoothed{};
-  for (std::size_t i = 0; i < nodalNormals.size(); ++i) {
-    smoothed[i] = {T(nodalNormals[i][0]), T(nodalNormals[i][1])};
-  }
-  const std::span<const k::Vec2<T>> normals(smoothed.data(), nodalNormals.size());
   T a(0.0);
   T b(0.0);
   if (!k::coveredInterval<T>(s.slaveType, slave, s.masterType, master, s.minLength, s.grazingCosine, a, b,

@@ -3,6 +3,7 @@
 #include "solver/contact/lac/LacPairing.hpp"
 
 #include "solver/contact/lac/LacOverlapTerms.hpp"
+#include "solver/contact/lac/LacSmoothing.hpp"
 
 #include <algorithm>
 #include <array>
@@ -15,7 +16,7 @@ namespace {
 
 using mortar::Point2;
 using mortar::Segment;
-using Dual = mortar::ForwardDual<kOverlapCoordinates>;
+using Dual = LacDual;
 
 Segment segmentOf(const Mesh& mesh, CellId c, const std::vector<double>* u) {
   Segment s;
@@ -47,11 +48,13 @@ Box3 boxOf(const Segment& s, const mortar::SearchMargin& margin) {
   return mortar::slaveBox(s.type, p.data(), static_cast<int>(s.nodes.size()), margin);
 }
 
-// The equations of the 12 local coordinates of an overlap (LacOverlapTerms.hpp's layout), -1 where
-// none (a SEG2's third node, a component without an equation).
-std::array<int, kOverlapCoordinates> localEquations(const DofMap& dofs, std::span<const NodeId> slave,
-                                                    std::span<const NodeId> master) {
-  std::array<int, kOverlapCoordinates> e{};
+// The equations of the local coordinates of an overlap (LacOverlapTerms.hpp's layout: the slave's,
+// the master's, then LISSAGE's neighbour nodes), -1 where none (a SEG2's third node, a component
+// without an equation).
+using LocalEquations = std::array<int, kDerivativeCoordinates>;
+LocalEquations localEquations(const DofMap& dofs, std::span<const NodeId> slave,
+                              std::span<const NodeId> master, std::span<const NodeId> neighbours) {
+  LocalEquations e{};
   e.fill(-1);
   for (std::size_t c = 0; c < 2; ++c) {
     for (std::size_t i = 0; i < slave.size(); ++i) {
@@ -59,6 +62,9 @@ std::array<int, kOverlapCoordinates> localEquations(const DofMap& dofs, std::spa
     }
     for (std::size_t j = 0; j < master.size(); ++j) {
       e[6 + 2 * j + c] = dofs.dof(master[j], static_cast<int>(c));
+    }
+    for (std::size_t j = 0; j < neighbours.size(); ++j) {
+      e[kOverlapCoordinates + 2 * j + c] = dofs.dof(neighbours[j], static_cast<int>(c));
     }
   }
   return e;
@@ -80,15 +86,14 @@ struct DerivativeSums {
   std::map<std::pair<int, int>, double> gradient;
 };
 
-void addDerivatives(const OverlapTerms<Dual>& t, const std::array<int, kOverlapCoordinates>& eq,
-                    DerivativeSums& sums) {
+void addDerivatives(const OverlapTerms<Dual>& t, const LocalEquations& eq, DerivativeSums& sums) {
   for (std::size_t l = 0; l < eq.size(); ++l) {
     if (eq[l] < 0) {
       continue;
     }
     sums.gap[eq[l]] += t.gap.d[l];
     sums.length[eq[l]] += t.length.d[l];
-    for (std::size_t i = 0; i < eq.size(); ++i) {
+    for (std::size_t i = 0; i < t.normal.size(); ++i) {
       if (eq[i] >= 0 && t.normal[i].d[l] != 0.0) {
         sums.gradient[{eq[i], eq[l]}] += t.normal[i].d[l];
       }
@@ -123,6 +128,8 @@ void pairZone(const Mesh& mesh, const LacZoneCells& zone, const std::vector<doub
   std::vector<double> gw;
   mortar::kernel::gaussLegendre(options.gaussPoints, gx, gw);
   const auto smoothed = zone.smoothing ? averagedNormals(mesh, zone, u) : std::map<NodeId, Point2>{};
+  const auto adjacency =
+      zone.smoothing && options.geometricTangent ? slaveAdjacency(mesh, zone) : SlaveAdjacency{};
   for (std::size_t k = 0; k < zone.slaves.size(); ++k) {
     const LacSlaveCell& sc = zone.slaves[k];
     const Segment current = segmentOf(mesh, sc.cell, &u);
@@ -142,6 +149,11 @@ void pairZone(const Mesh& mesh, const LacZoneCells& zone, const std::vector<doub
     const std::span<const Point2> nodalNormals(normals.data(), zone.smoothing ? slaveNodes.size() : 0);
     const auto slaveDual =
         options.geometricTangent ? seeded(current, 0) : std::vector<mortar::kernel::Vec2<Dual>>{};
+    const SmoothedStencil stencil = zone.smoothing && options.geometricTangent
+                                        ? smoothedStencil(mesh, zone, adjacency, k, u)
+                                        : SmoothedStencil{};
+    const std::span<const mortar::kernel::Vec2<Dual>> normalsDual(stencil.normals.data(),
+                                                                  nodalNormals.size());
     for (const int m : candidates.of(k)) {
       const Segment& master = masters[static_cast<std::size_t>(m)];
       const OverlapSetup setup{current.type,         master.type, sc.sign, options.axisymmetric,
@@ -151,11 +163,11 @@ void pairZone(const Mesh& mesh, const LacZoneCells& zone, const std::vector<doub
       if (!t.paired) {
         continue;
       }
-      const auto eq =
-          localEquations(dofs, slaveNodes, mesh.cellNodes(zone.masters[static_cast<std::size_t>(m)]));
+      const auto eq = localEquations(
+          dofs, slaveNodes, mesh.cellNodes(zone.masters[static_cast<std::size_t>(m)]), stencil.neighbours);
       row.pairedLength += t.length;
       row.integratedGap += t.gap;
-      for (std::size_t l = 0; l < eq.size(); ++l) {
+      for (std::size_t l = 0; l < t.normal.size(); ++l) {
         if (eq[l] >= 0) {
           sums.gradients[p][eq[l]] += t.normal[l];
           sums.slips[p][0][eq[l]] += t.slip[l];
@@ -163,7 +175,7 @@ void pairZone(const Mesh& mesh, const LacZoneCells& zone, const std::vector<doub
       }
       if (options.geometricTangent) {
         const auto masterDual = seeded(master, 6);
-        addDerivatives(overlapTerms<Dual>(setup, slaveDual, masterDual, initial.nodes, nodalNormals), eq,
+        addDerivatives(overlapTerms<Dual>(setup, slaveDual, masterDual, initial.nodes, normalsDual), eq,
                        sums.derivatives[p]);
       }
     }
@@ -171,28 +183,6 @@ void pairZone(const Mesh& mesh, const LacZoneCells& zone, const std::vector<doub
 }
 
 } // namespace
-
-std::map<NodeId, Point2> averagedNormals(const Mesh& mesh, const LacZoneCells& zone,
-                                         const std::vector<double>& u) {
-  std::map<NodeId, Point2> sums;
-  for (const LacSlaveCell& sc : zone.slaves) {
-    const Segment s = segmentOf(mesh, sc.cell, &u);
-    const auto nodes = mesh.cellNodes(sc.cell);
-    constexpr std::array<double, 3> at{-1.0, 1.0, 0.0}; // the nodes' coordinates: ends, then middle
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-      const Point2 t = mortar::segmentTangent(s, at[i]);
-      const double j = norm2(t);
-      Point2& n = sums[nodes[i]];
-      n[0] += sc.sign * t[1] / j;
-      n[1] -= sc.sign * t[0] / j;
-    }
-  }
-  for (auto& [node, n] : sums) {
-    const double j = norm2(n);
-    n = {n[0] / j, n[1] / j};
-  }
-  return sums;
-}
 
 double largestZoneDisplacement(const Mesh& mesh, const LacZoneCells& zone, const std::vector<double>& u) {
   double largest = 0.0;

@@ -4,7 +4,7 @@
 // curved, partly covered and open or penetrated patch by patch, the tangent -d(forces)/du of the
 // contact forces and the mean-gap rows dg_P/du against central differences of the forces and of
 // the mean gaps, each evaluated with the pairing redone at the perturbed positions (the residual
-// Newton solves), for D_PLAN and AXIS and both TYPE_JACOBIEN.
+// Newton solves), for D_PLAN and AXIS, both TYPE_JACOBIEN, and LISSAGE='OUI'.
 
 #include "solver/contact/lac/LacContactConstraint.hpp"
 #include "solver/contact/tests/ContactTestMeshes.hpp"
@@ -24,6 +24,7 @@ struct Case {
   CellType cell = CellType::QUAD4;
   fem::Modelling modelling = fem::Modelling::PlaneStrain;
   bool currentJacobian = false;
+  bool smoothing = false; // LISSAGE='OUI'
 };
 
 struct Blocks {
@@ -45,6 +46,7 @@ struct Blocks {
     definition->mesh = mesh;
     definition->settings.formulation = Formulation::Continue;
     definition->settings.continuous.geometryNewton = true;
+    definition->settings.smoothing = c.smoothing;
     ContactZone zone;
     zone.masterGroup = "A_YMAX";
     zone.slaveGroup = "B_YMIN";
@@ -151,6 +153,15 @@ TEST(LacGeometricTangent, Seg3PatchesPlaneStrain) {
 
 TEST(LacGeometricTangent, Seg3PatchesAxisymmetricCurrentJacobian) {
   checkAgainstCentralDifferences({CellType::QUAD8, fem::Modelling::Axisymmetric, true});
+}
+
+// LISSAGE='OUI': the averaged nodal normals depend on the neighbouring slave cells' nodes too
+TEST(LacGeometricTangent, Seg2PatchesSmoothedNormals) {
+  checkAgainstCentralDifferences({CellType::QUAD4, fem::Modelling::PlaneStrain, false, true});
+}
+
+TEST(LacGeometricTangent, Seg3PatchesSmoothedNormalsAxisymmetric) {
+  checkAgainstCentralDifferences({CellType::QUAD8, fem::Modelling::Axisymmetric, true, true});
 }
 
 } // namespace
