@@ -16,7 +16,8 @@ namespace {
 
 using mortar::Point2;
 using mortar::Segment;
-using Dual = LacDual;
+// the duals of an overlap without LISSAGE (its 12 coordinates) and with it (LacDual: the neighbours too)
+using OverlapDual = mortar::ForwardDual<kOverlapCoordinates>;
 
 Segment segmentOf(const Mesh& mesh, CellId c, const std::vector<double>* u) {
   Segment s;
@@ -70,7 +71,7 @@ LocalEquations localEquations(const DofMap& dofs, std::span<const NodeId> slave,
   return e;
 }
 
-std::vector<mortar::kernel::Vec2<Dual>> seeded(const Segment& s, int first) {
+template <class Dual> std::vector<mortar::kernel::Vec2<Dual>> seeded(const Segment& s, int first) {
   std::vector<mortar::kernel::Vec2<Dual>> out;
   for (std::size_t i = 0; i < s.nodes.size(); ++i) {
     const int k = first + 2 * static_cast<int>(i);
@@ -80,14 +81,16 @@ std::vector<mortar::kernel::Vec2<Dual>> seeded(const Segment& s, int first) {
 }
 
 // The sums of one patch's exact derivatives (LacPatchRow::gapDerivative...).
+// (the gradient's derivative as entries: their sum is left to the assembly of the tangent)
 struct DerivativeSums {
   std::map<int, double> gap;
   std::map<int, double> length;
-  std::map<std::pair<int, int>, double> gradient;
+  std::vector<LacPatchRow::Entry> gradient;
 };
 
+template <class Dual>
 void addDerivatives(const OverlapTerms<Dual>& t, const LocalEquations& eq, DerivativeSums& sums) {
-  for (std::size_t l = 0; l < eq.size(); ++l) {
+  for (std::size_t l = 0; l < t.gap.d.size(); ++l) {
     if (eq[l] < 0) {
       continue;
     }
@@ -95,9 +98,24 @@ void addDerivatives(const OverlapTerms<Dual>& t, const LocalEquations& eq, Deriv
     sums.length[eq[l]] += t.length.d[l];
     for (std::size_t i = 0; i < t.normal.size(); ++i) {
       if (eq[i] >= 0 && t.normal[i].d[l] != 0.0) {
-        sums.gradient[{eq[i], eq[l]}] += t.normal[i].d[l];
+        sums.gradient.push_back({eq[i], eq[l], t.normal[i].d[l]});
       }
     }
+  }
+}
+
+// The derivatives of one overlap: the 12 coordinates' duals, or with LISSAGE the neighbours' too.
+void overlapDerivatives(const OverlapSetup& setup, const Segment& slave, const Segment& master,
+                        const Segment& initial, std::span<const mortar::kernel::Vec2<LacDual>> normals,
+                        const LocalEquations& eq, DerivativeSums& sums) {
+  if (normals.empty()) {
+    addDerivatives(overlapTerms<OverlapDual>(setup, seeded<OverlapDual>(slave, 0),
+                                             seeded<OverlapDual>(master, 6), initial.nodes),
+                   eq, sums);
+  } else {
+    addDerivatives(overlapTerms<LacDual>(setup, seeded<LacDual>(slave, 0), seeded<LacDual>(master, 6),
+                                         initial.nodes, normals),
+                   eq, sums);
   }
 }
 
@@ -147,13 +165,11 @@ void pairZone(const Mesh& mesh, const LacZoneCells& zone, const std::vector<doub
       normals[i] = smoothed.at(slaveNodes[i]);
     }
     const std::span<const Point2> nodalNormals(normals.data(), zone.smoothing ? slaveNodes.size() : 0);
-    const auto slaveDual =
-        options.geometricTangent ? seeded(current, 0) : std::vector<mortar::kernel::Vec2<Dual>>{};
     const SmoothedStencil stencil = zone.smoothing && options.geometricTangent
                                         ? smoothedStencil(mesh, zone, adjacency, k, u)
                                         : SmoothedStencil{};
-    const std::span<const mortar::kernel::Vec2<Dual>> normalsDual(stencil.normals.data(),
-                                                                  nodalNormals.size());
+    const std::span<const mortar::kernel::Vec2<LacDual>> normalsDual(stencil.normals.data(),
+                                                                     nodalNormals.size());
     for (const int m : candidates.of(k)) {
       const Segment& master = masters[static_cast<std::size_t>(m)];
       const OverlapSetup setup{current.type,         master.type, sc.sign, options.axisymmetric,
@@ -174,9 +190,7 @@ void pairZone(const Mesh& mesh, const LacZoneCells& zone, const std::vector<doub
         }
       }
       if (options.geometricTangent) {
-        const auto masterDual = seeded(master, 6);
-        addDerivatives(overlapTerms<Dual>(setup, slaveDual, masterDual, initial.nodes, normalsDual), eq,
-                       sums.derivatives[p]);
+        overlapDerivatives(setup, current, master, initial, normalsDual, eq, sums.derivatives[p]);
       }
     }
   }
@@ -246,9 +260,7 @@ std::vector<LacPatchRow> pairLacPatches(const Mesh& mesh, const std::vector<LacZ
       const DerivativeSums& d = derivatives[p];
       rows[p].gapDerivative.assign(d.gap.begin(), d.gap.end());
       rows[p].lengthDerivative.assign(d.length.begin(), d.length.end());
-      for (const auto& [ij, v] : d.gradient) {
-        rows[p].gradientDerivative.push_back({ij.first, ij.second, v});
-      }
+      rows[p].gradientDerivative = d.gradient;
     }
   }
   return rows;
