@@ -142,11 +142,11 @@ std::unique_ptr<StepConstraint> makeLac(std::shared_ptr<const ContactDefinition>
   if (def->hasFriction()) {
     refuseLacFriction(*def);
   }
-  if (def->settings.smoothing) {
-    notImplemented("LISSAGE='OUI' with ALGO_CONT='LAC'", def->location,
-                   "LAC uses the normals of the slave cells; remove LISSAGE");
-  }
   const fem::Modelling modelling = system.model().modelling;
+  if (def->settings.smoothing && modelling == fem::Modelling::ThreeD) {
+    notImplemented("LISSAGE='OUI' with ALGO_CONT='LAC' in 3D", def->location,
+                   "LAC in 3D uses the normals of the slave faces; remove LISSAGE (it is implemented in 2D)");
+  }
   if (policy) {
     notImplemented("DEFI_LIST_INST EVENEMENT='INTERPENETRATION' with ALGO_CONT='LAC'", at,
                    "remove the INTERPENETRATION event");

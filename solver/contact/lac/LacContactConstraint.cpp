@@ -66,6 +66,7 @@ LacContactConstraint::LacContactConstraint(std::shared_ptr<const ContactDefiniti
     cells.zone = static_cast<int>(z);
     cells.bruteForce = zone.continuous.lacBruteForce;
     cells.currentJacobian = zone.continuous.lacCurrentJacobian;
+    cells.smoothing = definition_->settings.smoothing; // LISSAGE (2D; refused in 3D by makeLac)
     cells.masters = zoneMasterCells(mesh, zone);
     std::map<CellId, int> patchOf;
     for (std::size_t p = 0; p < patches.size(); ++p) {
@@ -134,6 +135,7 @@ LacContactConstraint::LacContactConstraint(std::shared_ptr<const ContactDefiniti
   lagsTStart_ = lagsT_;
   status_.assign(patches.size(), 0);
   accepted_ = status_;
+  consistent_ = definition_->settings.continuous.geometryNewton && modelling != fem::Modelling::ThreeD;
   uPairing_ = Eigen::VectorXd::Zero(dofs.physicalCount());
   pairAt(uPairing_);
 }
@@ -142,9 +144,16 @@ void LacContactConstraint::pairAt(const Eigen::VectorXd& u) {
   const Mesh& mesh = *definition_->mesh;
   LacPairingOptions options;
   options.axisymmetric = modelling_ == fem::Modelling::Axisymmetric;
+  options.geometricTangent = consistent_;
   rows_ = pairLacPatches(mesh, zones_, nodalDisplacement(dofs_, mesh.nodeCount(), u), dofs_, options);
   uPairing_ = u.head(dofs_.physicalCount());
   ++pairings_;
+  gapRows_.assign(rows_.size(), {});
+  for (std::size_t p = 0; consistent_ && p < rows_.size(); ++p) {
+    if (paired(p)) {
+      gapRows_[p] = exactGapRow(p);
+    }
+  }
   for (std::size_t p = 0; p < rows_.size(); ++p) {
     if (!paired(p)) {
       lagsC_[p] = 0.0; // not paired: no contact pressure
@@ -155,11 +164,11 @@ void LacContactConstraint::pairAt(const Eigen::VectorXd& u) {
 
 double LacContactConstraint::gapAt(std::size_t p, const Eigen::VectorXd& u) const {
   const LacPatchRow& r = rows_[p];
-  double g = r.integratedGap;
-  for (const auto& [e, v] : r.gradient) {
+  double g = r.integratedGap / r.pairedLength;
+  for (const auto& [e, v] : gapRow(p)) {
     g += v * (u(e) - uPairing_(e));
   }
-  return g / r.pairedLength;
+  return g;
 }
 
 std::vector<double> LacContactConstraint::meanGaps(const Eigen::VectorXd& u) const {
@@ -247,7 +256,9 @@ void LacContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::VectorXd& 
     if (friction()) {
       addFrictionForces(p, status[p], u, forces, tangent);
     }
-    if (tangent != nullptr) {
+    if (tangent != nullptr && consistent_) {
+      addGeometricTangent(p, on, on ? lagsC_[p] + rho_ * g : 0.0, *tangent);
+    } else if (tangent != nullptr) {
       const double c = on ? rho_ / r.pairedLength : 0.0; // zeros keep the pattern of the pairing
       for (const auto& [i, vi] : r.gradient) {
         for (const auto& [j, vj] : r.gradient) {

@@ -18,9 +18,11 @@
 // Status (ALGO_RESO_CONT): NEWTON re-evaluates it at every Newton iteration (generalised Newton),
 // POINT_FIXE at the convergence of the Newton iterations; a step ends when it no longer changes.
 // Geometry (ALGO_RESO_GEOM): NEWTON pairs again at every Newton iteration on the current
-// positions (the overlaps, normals and gaps follow the iterate; the tangent holds them fixed: a
-// quasi-Newton on geometry, exact for flat surfaces in contact) and a step ends when the contact
-// nodes moved by less than RESI_GEOM x the step's displacement since the last pairing;
+// positions (the overlaps, normals and gaps follow the iterate) and a step ends when the contact
+// nodes moved by less than RESI_GEOM x the step's displacement since the last pairing; in 2D the
+// tangent is the consistent linearisation of the mortar integrals (overlap ends, normals, master
+// points, Jacobians: LacGeometricTangent.cpp; non-symmetric), in 3D it holds them fixed (a
+// quasi-Newton on geometry, exact for flat surfaces in contact);
 // POINT_FIXE pairs at the start of each step and again at convergence (REAC_GEOM AUTOMATIQUE with
 // ITER_GEOM_MAXI and RESI_GEOM, CONTROLE with NB_ITER_GEOM, SANS: the initial pairing only).
 // CONTACT_INIT: the status of the first step (OUI every paired patch, INTERPENETRE the patches
@@ -52,7 +54,7 @@ public:
   void beginStep(const Eigen::VectorXd& u, double time) override;
   void addForces(const Eigen::VectorXd& u, Eigen::VectorXd& forces,
                  std::vector<Eigen::Triplet<double>>* tangent) override;
-  bool symmetric() const override { return true; }
+  bool symmetric() const override { return !consistent_; }
   void correct(const Eigen::VectorXd& u, Eigen::VectorXd& ddu, Eigen::VectorXd& dlambda,
                SaddleSolver& solver) override;
   bool acceptConvergence(const Eigen::VectorXd& u) override;
@@ -69,6 +71,16 @@ public:
 
 private:
   void pairAt(const Eigen::VectorXd& u);
+  // ALGO_RESO_GEOM='NEWTON' in 2D: the consistent geometric tangent (LacGeometricTangent.cpp).
+  // The gap row of patch p: dg_P/du = (dG_P/du - g_P dL_P/du) / L_P, every variation included.
+  std::vector<std::pair<int, double>> exactGapRow(std::size_t p) const;
+  // -d(forces)/du of a patch: rho c (dg_P/du)^T + (lambda_P + rho g_P) dc/du (c = dG_P with the
+  // geometry held, the force's direction); zeros when `on` is false (the pattern of the pairing).
+  void addGeometricTangent(std::size_t p, bool on, double pressure,
+                           std::vector<Eigen::Triplet<double>>& tangent) const;
+  // The coefficients of a patch's mean-gap row in the Schur complement: dg_P/du (consistent) or
+  // dG_P / L_P (the geometry held).
+  std::vector<std::pair<int, double>> gapRow(std::size_t p) const;
   double gapAt(std::size_t p, const Eigen::VectorXd& u) const; // mean gap, linearised on the pairing
   bool paired(std::size_t p) const { return rows_[p].pairedLength > 0.0; }
   std::vector<char> statusAt(const Eigen::VectorXd& u) const;
@@ -125,6 +137,8 @@ private:
   std::vector<NodeId> patchNode_; // per patch: the node carrying its LAGS_C
   std::vector<int> contactEquations_;
   std::vector<LacPatchRow> rows_; // per patch, at uPairing_
+  bool consistent_ = false;       // ALGO_RESO_GEOM='NEWTON' in 2D: the consistent geometric tangent
+  std::vector<std::vector<std::pair<int, double>>> gapRows_; // per patch: dg_P/du when consistent_
   Eigen::VectorXd uPairing_;
   Eigen::VectorXd uStart_;
   double time_ = 0.0;

@@ -2,6 +2,9 @@
 
 #include "solver/contact/lac/LacPairing.hpp"
 
+#include "solver/contact/lac/LacOverlapTerms.hpp"
+#include "solver/contact/lac/LacSmoothing.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -13,14 +16,8 @@ namespace {
 
 using mortar::Point2;
 using mortar::Segment;
-
-// Shape functions of SEG2 / SEG3 (ends, then middle) at xi.
-std::array<double, 3> shape(CellType t, double xi) {
-  if (t == CellType::SEG2) {
-    return {0.5 * (1 - xi), 0.5 * (1 + xi), 0.0};
-  }
-  return {-0.5 * xi * (1 - xi), 0.5 * xi * (1 + xi), 1 - xi * xi};
-}
+// the duals of an overlap without LISSAGE (its 12 coordinates) and with it (LacDual: the neighbours too)
+using OverlapDual = mortar::ForwardDual<kOverlapCoordinates>;
 
 Segment segmentOf(const Mesh& mesh, CellId c, const std::vector<double>* u) {
   Segment s;
@@ -52,18 +49,84 @@ Box3 boxOf(const Segment& s, const mortar::SearchMargin& margin) {
   return mortar::slaveBox(s.type, p.data(), static_cast<int>(s.nodes.size()), margin);
 }
 
-void addGradient(std::map<int, double>& g, const DofMap& dofs, NodeId n, const Point2& v, double f) {
-  for (int c = 0; c < 2; ++c) {
-    const int e = dofs.dof(n, c);
-    if (e >= 0) {
-      g[e] += f * v[static_cast<std::size_t>(c)];
+// The equations of the local coordinates of an overlap (LacOverlapTerms.hpp's layout: the slave's,
+// the master's, then LISSAGE's neighbour nodes), -1 where none (a SEG2's third node, a component
+// without an equation).
+using LocalEquations = std::array<int, kDerivativeCoordinates>;
+LocalEquations localEquations(const DofMap& dofs, std::span<const NodeId> slave,
+                              std::span<const NodeId> master, std::span<const NodeId> neighbours) {
+  LocalEquations e{};
+  e.fill(-1);
+  for (std::size_t c = 0; c < 2; ++c) {
+    for (std::size_t i = 0; i < slave.size(); ++i) {
+      e[2 * i + c] = dofs.dof(slave[i], static_cast<int>(c));
+    }
+    for (std::size_t j = 0; j < master.size(); ++j) {
+      e[6 + 2 * j + c] = dofs.dof(master[j], static_cast<int>(c));
+    }
+    for (std::size_t j = 0; j < neighbours.size(); ++j) {
+      e[kOverlapCoordinates + 2 * j + c] = dofs.dof(neighbours[j], static_cast<int>(c));
+    }
+  }
+  return e;
+}
+
+template <class Dual> std::vector<mortar::kernel::Vec2<Dual>> seeded(const Segment& s, int first) {
+  std::vector<mortar::kernel::Vec2<Dual>> out;
+  for (std::size_t i = 0; i < s.nodes.size(); ++i) {
+    const int k = first + 2 * static_cast<int>(i);
+    out.push_back({Dual::variable(s.nodes[i][0], k), Dual::variable(s.nodes[i][1], k + 1)});
+  }
+  return out;
+}
+
+// The sums of one patch's exact derivatives (LacPatchRow::gapDerivative...).
+// (the gradient's derivative as entries: their sum is left to the assembly of the tangent)
+struct DerivativeSums {
+  std::map<int, double> gap;
+  std::map<int, double> length;
+  std::vector<LacPatchRow::Entry> gradient;
+};
+
+template <class Dual>
+void addDerivatives(const OverlapTerms<Dual>& t, const LocalEquations& eq, DerivativeSums& sums) {
+  for (std::size_t l = 0; l < t.gap.d.size(); ++l) {
+    if (eq[l] < 0) {
+      continue;
+    }
+    sums.gap[eq[l]] += t.gap.d[l];
+    sums.length[eq[l]] += t.length.d[l];
+    for (std::size_t i = 0; i < t.normal.size(); ++i) {
+      if (eq[i] >= 0 && t.normal[i].d[l] != 0.0) {
+        sums.gradient.push_back({eq[i], eq[l], t.normal[i].d[l]});
+      }
     }
   }
 }
 
+// The derivatives of one overlap: the 12 coordinates' duals, or with LISSAGE the neighbours' too.
+void overlapDerivatives(const OverlapSetup& setup, const Segment& slave, const Segment& master,
+                        const Segment& initial, std::span<const mortar::kernel::Vec2<LacDual>> normals,
+                        const LocalEquations& eq, DerivativeSums& sums) {
+  if (normals.empty()) {
+    addDerivatives(overlapTerms<OverlapDual>(setup, seeded<OverlapDual>(slave, 0),
+                                             seeded<OverlapDual>(master, 6), initial.nodes),
+                   eq, sums);
+  } else {
+    addDerivatives(overlapTerms<LacDual>(setup, seeded<LacDual>(slave, 0), seeded<LacDual>(master, 6),
+                                         initial.nodes, normals),
+                   eq, sums);
+  }
+}
+
+struct ZoneSums {
+  std::vector<std::map<int, double>>& gradients;
+  std::vector<SlipSums>& slips;
+  std::vector<DerivativeSums>& derivatives;
+};
+
 void pairZone(const Mesh& mesh, const LacZoneCells& zone, const std::vector<double>& u, const DofMap& dofs,
-              const LacPairingOptions& options, std::vector<LacPatchRow>& rows,
-              std::vector<std::map<int, double>>& gradients, std::vector<SlipSums>& slips) {
+              const LacPairingOptions& options, std::vector<LacPatchRow>& rows, const ZoneSums& sums) {
   std::vector<Segment> masters;
   std::vector<Box3> masterBoxes;
   for (CellId c : zone.masters) {
@@ -79,48 +142,55 @@ void pairZone(const Mesh& mesh, const LacZoneCells& zone, const std::vector<doub
     slaveBoxes.push_back(boxOf(current, lacMargin(h, moved)));
   }
   const mortar::Candidates candidates = lacCandidates(slaveBoxes, masterBoxes, zone.bruteForce);
-  mortar::SegmentOptions segmentOptions;
-  segmentOptions.gaussPoints = options.gaussPoints;
+  std::vector<double> gx;
+  std::vector<double> gw;
+  mortar::kernel::gaussLegendre(options.gaussPoints, gx, gw);
+  const auto smoothed = zone.smoothing ? averagedNormals(mesh, zone, u) : std::map<NodeId, Point2>{};
+  const auto adjacency =
+      zone.smoothing && options.geometricTangent ? slaveAdjacency(mesh, zone) : SlaveAdjacency{};
   for (std::size_t k = 0; k < zone.slaves.size(); ++k) {
     const LacSlaveCell& sc = zone.slaves[k];
     const Segment current = segmentOf(mesh, sc.cell, &u);
     const Segment initial = segmentOf(mesh, sc.cell, nullptr);
-    const Segment& jacobianOn = zone.currentJacobian ? current : initial;
-    LacPatchRow& row = rows[static_cast<std::size_t>(sc.patch)];
+    const auto p = static_cast<std::size_t>(sc.patch);
+    LacPatchRow& row = rows[p];
     // the whole slave cell's length, with the same rule as the overlaps (exact for SEG2/SEG3)
     for (double xi : {-std::sqrt(0.6), 0.0, std::sqrt(0.6)}) {
       const double w = xi == 0.0 ? 8.0 / 9 : 5.0 / 9;
-      row.length += w * measure(jacobianOn, xi, options.axisymmetric);
+      row.length += w * measure(zone.currentJacobian ? current : initial, xi, options.axisymmetric);
     }
-    const auto overlaps = mortar::intersectSegments(current, masters, candidates.of(k), segmentOptions);
     const auto slaveNodes = mesh.cellNodes(sc.cell);
-    for (const auto& o : overlaps) {
-      const Segment& m = masters[static_cast<std::size_t>(o.master)];
-      const auto masterNodes = mesh.cellNodes(zone.masters[static_cast<std::size_t>(o.master)]);
-      for (const auto& q : o.points) {
-        const Point2 t = mortar::segmentTangent(current, q.slaveXi);
-        const double jt = norm2(t);
-        const Point2 n = {sc.sign * t[1] / jt, -sc.sign * t[0] / jt};
-        const Point2 xs = mortar::segmentPoint(current, q.slaveXi);
-        const Point2 xm = mortar::segmentPoint(m, q.masterXi);
-        const double gap = n[0] * (xm[0] - xs[0]) + n[1] * (xm[1] - xs[1]);
-        // q.weight = Gauss weight x |dx/dxi| (current): take the configuration's measure instead
-        const double w = q.weight / jt * measure(jacobianOn, q.slaveXi, options.axisymmetric);
-        row.pairedLength += w;
-        row.integratedGap += w * gap;
-        auto& grad = gradients[static_cast<std::size_t>(sc.patch)];
-        auto& slip = slips[static_cast<std::size_t>(sc.patch)][0];
-        const Point2 tau = {-n[1], n[0]};
-        const auto ns = shape(current.type, q.slaveXi);
-        for (std::size_t i = 0; i < slaveNodes.size(); ++i) {
-          addGradient(grad, dofs, slaveNodes[i], n, -w * ns[i]);
-          addGradient(slip, dofs, slaveNodes[i], tau, w * ns[i]);
+    std::array<Point2, 3> normals{};
+    for (std::size_t i = 0; zone.smoothing && i < slaveNodes.size(); ++i) {
+      normals[i] = smoothed.at(slaveNodes[i]);
+    }
+    const std::span<const Point2> nodalNormals(normals.data(), zone.smoothing ? slaveNodes.size() : 0);
+    const SmoothedStencil stencil = zone.smoothing && options.geometricTangent
+                                        ? smoothedStencil(mesh, zone, adjacency, k, u)
+                                        : SmoothedStencil{};
+    const std::span<const mortar::kernel::Vec2<LacDual>> normalsDual(stencil.normals.data(),
+                                                                     nodalNormals.size());
+    for (const int m : candidates.of(k)) {
+      const Segment& master = masters[static_cast<std::size_t>(m)];
+      const OverlapSetup setup{current.type,         master.type, sc.sign, options.axisymmetric,
+                               zone.currentJacobian, gx,          gw};
+      const OverlapTerms<double> t =
+          overlapTerms<double>(setup, current.nodes, master.nodes, initial.nodes, nodalNormals);
+      if (!t.paired) {
+        continue;
+      }
+      const auto eq = localEquations(
+          dofs, slaveNodes, mesh.cellNodes(zone.masters[static_cast<std::size_t>(m)]), stencil.neighbours);
+      row.pairedLength += t.length;
+      row.integratedGap += t.gap;
+      for (std::size_t l = 0; l < t.normal.size(); ++l) {
+        if (eq[l] >= 0) {
+          sums.gradients[p][eq[l]] += t.normal[l];
+          sums.slips[p][0][eq[l]] += t.slip[l];
         }
-        const auto nm = shape(m.type, q.masterXi);
-        for (std::size_t j = 0; j < masterNodes.size(); ++j) {
-          addGradient(grad, dofs, masterNodes[j], n, w * nm[j]);
-          addGradient(slip, dofs, masterNodes[j], tau, -w * nm[j]);
-        }
+      }
+      if (options.geometricTangent) {
+        overlapDerivatives(setup, current, master, initial, normalsDual, eq, sums.derivatives[p]);
       }
     }
   }
@@ -168,6 +238,7 @@ std::vector<LacPatchRow> pairLacPatches(const Mesh& mesh, const std::vector<LacZ
   std::vector<LacPatchRow> rows(mesh.lacPatches().size());
   std::vector<std::map<int, double>> gradients(rows.size());
   std::vector<SlipSums> slips(rows.size());
+  std::vector<DerivativeSums> derivatives(options.geometricTangent ? rows.size() : 0);
   std::size_t directions = 1;
   for (const auto& zone : zones) {
     const bool faces = !zone.slaves.empty() && mesh.cellType(zone.slaves.front().cell) != CellType::SEG2 &&
@@ -176,7 +247,7 @@ std::vector<LacPatchRow> pairLacPatches(const Mesh& mesh, const std::vector<LacZ
       directions = 2;
       pairZone3d(mesh, zone, displacement, dofs, rows, gradients, slips);
     } else {
-      pairZone(mesh, zone, displacement, dofs, options, rows, gradients, slips);
+      pairZone(mesh, zone, displacement, dofs, options, rows, {gradients, slips, derivatives});
     }
   }
   for (std::size_t p = 0; p < rows.size(); ++p) {
@@ -184,6 +255,12 @@ std::vector<LacPatchRow> pairLacPatches(const Mesh& mesh, const std::vector<LacZ
     rows[p].slipGradients.resize(directions);
     for (std::size_t a = 0; a < directions; ++a) {
       rows[p].slipGradients[a].assign(slips[p][a].begin(), slips[p][a].end());
+    }
+    if (options.geometricTangent) {
+      const DerivativeSums& d = derivatives[p];
+      rows[p].gapDerivative.assign(d.gap.begin(), d.gap.end());
+      rows[p].lengthDerivative.assign(d.length.begin(), d.length.end());
+      rows[p].gradientDerivative = d.gradient;
     }
   }
   return rows;

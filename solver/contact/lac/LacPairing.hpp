@@ -38,7 +38,16 @@ struct LacZoneCells {
   std::vector<CellId> masters;
   bool bruteForce = false;      // TYPE_APPA='ROBUSTE'
   bool currentJacobian = false; // TYPE_JACOBIEN='ACTUALISE'
+  bool smoothing = false;       // LISSAGE='OUI' (2D): the averaged nodal normals (averagedNormals)
 };
+
+// LISSAGE='OUI' (notice §2.3.2), 2D: at each node of the zone's slave cells the mean of the outward
+// unit normals of the slave cells it belongs to, at the current positions `u` (3 per node),
+// normalised; the normal at a point of a slave cell is then the interpolation of its nodes'
+// normals (LacOverlapTerms.hpp), continuous from cell to cell. On a uniformly faceted circle the
+// nodal normals are the circle's.
+std::map<NodeId, mortar::Point2> averagedNormals(const Mesh& mesh, const LacZoneCells& zone,
+                                                 const std::vector<double>& u);
 
 // One patch's mortar quantities at a configuration.
 struct LacPatchRow {
@@ -52,11 +61,23 @@ struct LacPatchRow {
   // mesh, so that the tangential multipliers keep their meaning from one pairing to the next)
   // projected on the slave face's plane, tau_2 = tau_1 x n_s.
   std::vector<std::vector<std::pair<int, double>>> slipGradients;
+  // ALGO_RESO_GEOM='NEWTON' in 2D (LacPairingOptions::geometricTangent): the exact derivatives with
+  // respect to the nodal positions (through the overlap ends, Gauss points, normals, master points
+  // and Jacobians: LacOverlapTerms.hpp), for the consistent tangent (LacGeometricTangent.cpp).
+  struct Entry {
+    int row = -1;
+    int column = -1;
+    double value = 0.0;
+  };
+  std::vector<std::pair<int, double>> gapDerivative;    // dG_P/du
+  std::vector<std::pair<int, double>> lengthDerivative; // dL_P/du
+  std::vector<Entry> gradientDerivative;                // d(gradient_row)/du_column
 };
 
 struct LacPairingOptions {
   bool axisymmetric = false;
   int gaussPoints = 3;
+  bool geometricTangent = false; // fill the exact derivatives of the rows (2D zones)
 };
 
 // The search margin of a LAC slave cell. The segment and polygon kernels send the slave normals to

@@ -25,10 +25,23 @@ void LacContactConstraint::eliminate(const Eigen::VectorXd& u, Eigen::VectorXd& 
     return r.slip() ? rows_[r.patch].slipGradients[static_cast<std::size_t>(r.direction)]
                     : rows_[r.patch].gradient;
   };
+  // the rows' coefficients (the gap rows: gapRow, already divided by L_P)
+  std::vector<std::vector<std::pair<int, double>>> rowCoefficients(rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const SchurRow& r = rows[i];
+    if (r.slip()) {
+      const double length = rows_[r.patch].pairedLength;
+      for (const auto& [e, v] : gradientOf(r)) {
+        rowCoefficients[i].emplace_back(e, v / length);
+      }
+    } else {
+      rowCoefficients[i] = gapRow(r.patch);
+    }
+  }
   const auto mc = static_cast<Eigen::Index>(rows.size());
   const Eigen::Index n = ddu.size();
   std::vector<std::map<int, double>> columns(rows.size());
-  bool symmetric = true;
+  bool symmetric = !consistent_; // the consistent gap rows differ from the force columns
   for (std::size_t j = 0; j < rows.size(); ++j) {
     const SchurRow& r = rows[j];
     for (const auto& [e, v] : gradientOf(r)) {
@@ -58,22 +71,20 @@ void LacContactConstraint::eliminate(const Eigen::VectorXd& u, Eigen::VectorXd& 
       },
       [&](Eigen::Index i, const Eigen::MatrixXd& x,
           Eigen::Ref<Eigen::RowVectorXd, 0, Eigen::InnerStride<>> out) {
-        const SchurRow& r = rows[static_cast<std::size_t>(i)];
-        const double length = rows_[r.patch].pairedLength;
-        for (const auto& [e, v] : gradientOf(r)) {
-          out += (v / length) * x.row(e);
+        for (const auto& [e, v] : rowCoefficients[static_cast<std::size_t>(i)]) {
+          out += v * x.row(e);
         }
       });
   Eigen::VectorXd rhs(mc);
   for (Eigen::Index i = 0; i < mc; ++i) {
     const SchurRow& r = rows[static_cast<std::size_t>(i)];
     double bdu = 0.0;
-    for (const auto& [e, v] : gradientOf(r)) {
+    for (const auto& [e, v] : rowCoefficients[static_cast<std::size_t>(i)]) {
       bdu += v * ddu(e);
     }
     const double value =
         r.slip() ? slipAt(r.patch, u)[static_cast<std::size_t>(r.direction)] : gapAt(r.patch, u);
-    rhs(i) = value + bdu / rows_[r.patch].pairedLength;
+    rhs(i) = value + bdu;
   }
   const Eigen::VectorXd y = solveMultiplierSchur(s, rhs, symmetric, [&](Eigen::Index i) {
     const SchurRow& r = rows[static_cast<std::size_t>(i)];

@@ -207,5 +207,56 @@ TEST(LacPairing, PatchTangentIsTheLeastAlignedAxisMadeOrthogonal) {
   EXPECT_GT(patchTangent({0.6, -0.8, 0.0})[2], 0.99); // z, the axis the normal lies across
 }
 
+// LISSAGE='OUI': on an arc of a circle cut into uniform SEG2 or SEG3 cells (counterclockwise, so the
+// normal (ty, -tx) points out of the circle), the averaged normal at every node shared by two cells is
+// the circle's normal (the two cells are mirror images about the node's radius), at an end node the
+// one cell's normal, at a SEG3's middle node its normal there; and smoothing a flat slave changes
+// nothing (the closing-gap study with LISSAGE, LacContact.ClosingGapWithSmoothedNormals).
+TEST(LacPairing, AveragedNormalsOfAFacetedCircleAreTheCircles) {
+  for (const CellType type : {CellType::SEG2, CellType::SEG3}) {
+    Mesh mesh;
+    mesh.setDimension(2);
+    LacZoneCells zone;
+    zone.smoothing = true;
+    const int cells = 7;
+    const double step = 0.15;
+    const auto at = [&](double angle) {
+      return mesh.addNode({2.0 * std::cos(angle), 2.0 * std::sin(angle), 0.0});
+    };
+    std::vector<NodeId> ends;
+    for (int i = 0; i <= cells; ++i) {
+      ends.push_back(at(0.3 + step * i));
+    }
+    std::vector<Mesh::LacPatch> patches;
+    for (int i = 0; i < cells; ++i) {
+      std::vector<NodeId> n{ends[static_cast<std::size_t>(i)], ends[static_cast<std::size_t>(i + 1)]};
+      if (type == CellType::SEG3) {
+        n.push_back(at(0.3 + step * (i + 0.5)));
+      }
+      const CellId c = mesh.addCell(type, n);
+      patches.push_back({"ESCL", {c}});
+      zone.slaves.push_back({c, i, 1.0});
+    }
+    mesh.setLacPatches(patches);
+    const std::vector<double> u(static_cast<std::size_t>(mesh.nodeCount()) * 3, 0.0);
+    const auto normals = averagedNormals(mesh, zone, u);
+    ASSERT_EQ(normals.size(), static_cast<std::size_t>(mesh.nodeCount()));
+    for (int i = 1; i < cells; ++i) {
+      const double angle = 0.3 + step * i;
+      const auto& n = normals.at(ends[static_cast<std::size_t>(i)]);
+      EXPECT_NEAR(n[0], std::cos(angle), 1e-14) << name(type) << " node " << i;
+      EXPECT_NEAR(n[1], std::sin(angle), 1e-14) << name(type) << " node " << i;
+    }
+    // an end node: the cell's own normal, tilted from the circle's by half a cell (SEG2)
+    const auto& first = normals.at(ends.front());
+    const double tilt = std::atan2(first[1], first[0]) - 0.3;
+    if (type == CellType::SEG2) {
+      EXPECT_NEAR(tilt, step / 2, 1e-14);
+    } else {
+      EXPECT_GT(std::fabs(tilt), 1e-6); // the parabola's end tangent is close to, not on, the circle's
+    }
+  }
+}
+
 } // namespace
 } // namespace stella::contact::lac
