@@ -143,9 +143,10 @@ std::string effectsLine(const MechanicalSystem& system, const NewtonSettings& se
       linear ? "elasticity (no return mapping)"
              : fmt::format("{} (return mapping)", fmt::join(system.behaviours().relationNames(), ", ")),
       system.excitations().size(),
-      settings.symmetrizeTangent           ? "symmetric (MATR_RIGI_SYME: (K + K^T) / 2)"
-      : system.behaviours().allSymmetric() ? "symmetric"
-                                           : "unsymmetric",
+      settings.symmetrizeTangent ? "symmetric (MATR_RIGI_SYME: (K + K^T) / 2)"
+      : system.behaviours().allSymmetric() && (constraint == nullptr || constraint->symmetric())
+          ? "symmetric"
+          : "unsymmetric",
       settings.tangentMatrix ? "tangent" : "elastic", system.relationCount(),
       constraint != nullptr ? constraint->effects() : std::string("no contact"),
       settings.lineSearch.enabled ? ", line search CORDE" : "",
