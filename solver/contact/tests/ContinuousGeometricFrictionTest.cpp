@@ -71,14 +71,10 @@ TEST(ContinuousGeometricFriction, FrictionRowJacobiansMatchFiniteDifferences) {
     for (std::size_t j = 0; j < (dim == 1 ? 1U : 2U); ++j) {
       Eigen::MatrixXd fd(size, size);
       for (int v = 0; v < size; ++v) {
-        CellNodes plusCell = k.cell;
-        CellNodes minusCell = k.cell;
-        Point3 plusSlave = k.slave;
-        Point3 minusSlave = k.slave;
-        perturb(plusCell, plusSlave, v, h);
-        perturb(minusCell, minusSlave, v, -h);
-        fd.col(v) =
-            (frictionRows(plusCell, plusSlave)[j] - frictionRows(minusCell, minusSlave)[j]) / (2.0 * h);
+        const auto moved = movedBothWays(k, v, h);
+        fd.col(v) = (frictionRows(moved[0].cell, moved[0].slave)[j] -
+                     frictionRows(moved[1].cell, moved[1].slave)[j]) /
+                    (2.0 * h);
       }
       Eigen::MatrixXd mj = m[j];
       if (dim == 1) { // 2D: the z components (rows and columns) are not DOFs
@@ -160,19 +156,7 @@ TEST_P(AssembledFrictionTangent, MatchesFiniteDifferencesOfTheForces) {
   c.addForces(at, f, &t);
   const Eigen::MatrixXd k = dense(t, n);
   EXPECT_FALSE(c.symmetric());
-  constexpr double h = 1e-7;
-  Eigen::MatrixXd fd(n, n);
-  for (int j = 0; j < n; ++j) {
-    Eigen::VectorXd fp = Eigen::VectorXd::Zero(n);
-    Eigen::VectorXd fm = Eigen::VectorXd::Zero(n);
-    Eigen::VectorXd up = at;
-    Eigen::VectorXd um = at;
-    up(j) += h;
-    um(j) -= h;
-    c.addForces(up, fp, nullptr);
-    c.addForces(um, fm, nullptr);
-    fd.col(j) = -(fp - fm) / (2.0 * h);
-  }
+  const Eigen::MatrixXd fd = forceDifferences(c, at);
   const double scale = fd.cwiseAbs().maxCoeff();
   ASSERT_GT(scale, 0.0);
   const double error = (k - fd).cwiseAbs().maxCoeff() / scale;

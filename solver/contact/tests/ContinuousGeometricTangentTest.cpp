@@ -69,14 +69,9 @@ TEST(ContinuousGeometricTangent, GapDerivativesMatchFiniteDifferences) {
         fd.col(v).setZero();
         continue;
       }
-      CellNodes plusCell = k.cell;
-      CellNodes minusCell = k.cell;
-      Point3 plusSlave = k.slave;
-      Point3 minusSlave = k.slave;
-      perturb(plusCell, plusSlave, v, h);
-      perturb(minusCell, minusSlave, v, -h);
-      const GapAndRow plus = gapAndRow(plusCell, plusSlave);
-      const GapAndRow minus = gapAndRow(minusCell, minusSlave);
+      const auto moved = movedBothWays(k, v, h);
+      const GapAndRow plus = gapAndRow(moved[0].cell, moved[0].slave);
+      const GapAndRow minus = gapAndRow(moved[1].cell, moved[1].slave);
       fd.col(v) = (plus.row - minus.row) / (2.0 * h);
       rowError = std::max(rowError, std::abs((plus.gap - minus.gap) / (2.0 * h) - at.row(v)));
     }
@@ -120,19 +115,7 @@ TEST_P(AssembledGeometricTangent, MatchesFiniteDifferencesOfTheForces) {
   ContinuousContactConstraint c(newton.definition, *newton.dofs, newton.modelling);
   c.initialize();
   c.beginStep(u, 1.0);
-  constexpr double h = 1e-7;
-  Eigen::MatrixXd fd(n, n);
-  for (int j = 0; j < n; ++j) {
-    Eigen::VectorXd fp = Eigen::VectorXd::Zero(n);
-    Eigen::VectorXd fm = Eigen::VectorXd::Zero(n);
-    Eigen::VectorXd up = u;
-    Eigen::VectorXd um = u;
-    up(j) += h;
-    um(j) -= h;
-    c.addForces(up, fp, nullptr);
-    c.addForces(um, fm, nullptr);
-    fd.col(j) = -(fp - fm) / (2.0 * h);
-  }
+  const Eigen::MatrixXd fd = forceDifferences(c, u);
   const double scale = fd.cwiseAbs().maxCoeff();
   ASSERT_GT(scale, 0.0);
   const double error = (k - fd).cwiseAbs().maxCoeff() / scale;

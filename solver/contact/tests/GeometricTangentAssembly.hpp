@@ -6,6 +6,7 @@
 #include "solver/assembly/DofMap.hpp"
 #include "solver/contact/CellProjection.hpp"
 #include "solver/contact/ContactDefinition.hpp"
+#include "solver/contact/ContinuousContactConstraint.hpp"
 #include "solver/fem/Modelling.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 #include "solver/model/Model.hpp"
@@ -42,6 +43,14 @@ struct KernelCase {
   CellNodes cell;
   Point3 slave;
 };
+
+// The case with variable v moved by +h and by -h (central differences).
+inline std::array<KernelCase, 2> movedBothWays(const KernelCase& k, int v, double h) {
+  std::array<KernelCase, 2> out{k, k};
+  perturb(out[0].cell, out[0].slave, v, h);
+  perturb(out[1].cell, out[1].slave, v, -h);
+  return out;
+}
 
 inline CellNodes makeCell(CellType type, std::initializer_list<Point3> x) {
   CellNodes c;
@@ -153,6 +162,26 @@ inline Eigen::MatrixXd dense(const std::vector<Eigen::Triplet<double>>& t, int n
     k(e.row(), e.col()) += e.value();
   }
   return k;
+}
+
+// -d forces / du by central differences (step 1e-7) of the constraint's forces at u (the pairing redone
+// at each perturbed u with ALGO_RESO_GEOM='NEWTON'; multipliers and statuses as they are).
+inline Eigen::MatrixXd forceDifferences(ContinuousContactConstraint& c, const Eigen::VectorXd& u) {
+  constexpr double h = 1e-7;
+  const auto n = u.size();
+  Eigen::MatrixXd fd(n, n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    Eigen::VectorXd fp = Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd fm = Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd up = u;
+    Eigen::VectorXd um = u;
+    up(j) += h;
+    um(j) -= h;
+    c.addForces(up, fp, nullptr);
+    c.addForces(um, fm, nullptr);
+    fd.col(j) = -(fp - fm) / (2.0 * h);
+  }
+  return fd;
 }
 
 } // namespace stella::contact::geometric_test
