@@ -173,7 +173,13 @@ INSTANTIATE_TEST_SUITE_P(StickAndSlip, AssembledFrictionTangent,
                                            FrictionCase{false, FrictionState::Slide, false},
                                            FrictionCase{false, FrictionState::Slide, true},
                                            FrictionCase{true, FrictionState::Stick, false},
-                                           FrictionCase{true, FrictionState::Slide, true}));
+                                           FrictionCase{true, FrictionState::Slide, true}),
+                         [](const ::testing::TestParamInfo<FrictionCase>& p) {
+                           const FrictionCase& c = p.param;
+                           return fmt::format("{}_{}_{}", c.threeD ? "ThreeD" : "TwoD",
+                                              c.state == FrictionState::Stick ? "Stick" : "Slide",
+                                              c.penalisedFriction ? "Penalisation" : "Standard");
+                         });
 
 } // namespace
 } // namespace stella::contact
