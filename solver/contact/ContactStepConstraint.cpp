@@ -179,12 +179,18 @@ void refuseAtPoints(const ContactDefinition& def) {
 }
 
 // ALGO_RESO_GEOM='NEWTON' has the geometric tangent of the master's own normal at the slave nodes,
-// frictionless (ContinuousGeometricTangent.hpp).
+// with Coulomb friction on the pairing's tangents (ContinuousGeometricTangent.hpp).
 void refuseGeometryNewton(const ContactDefinition& def) {
   const SourceLocation& at = def.settings.continuous.geometryAt;
   const std::string note = "use ALGO_RESO_GEOM='POINT_FIXE' (the geometric loop, REAC_GEOM)";
-  if (def.hasFriction()) {
-    notImplemented("ALGO_RESO_GEOM='NEWTON' and FROTTEMENT='COULOMB' with FORMULATION='CONTINUE'", at, note);
+  for (const auto& z : def.zones) {
+    if (def.hasFriction() && z.continuous.excludedDirection && def.mesh->dimension() == 3) {
+      notImplemented("ALGO_RESO_GEOM='NEWTON' and DIRE_EXCL_FROT in 3D with FORMULATION='CONTINUE'",
+                     z.continuous.excludedDirectionAt,
+                     "the friction direction DIRE_EXCL_FROT leaves turns with the geometry and its variation "
+                     "is not in the tangent; " +
+                         note);
+    }
   }
   if (def.settings.smoothing) {
     notImplemented("ALGO_RESO_GEOM='NEWTON' and LISSAGE='OUI' with FORMULATION='CONTINUE'", at, note);

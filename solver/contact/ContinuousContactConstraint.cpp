@@ -272,7 +272,8 @@ void ContinuousContactConstraint::addForces(const Eigen::VectorXd& u, Eigen::Vec
       addGeometricTangent(i, w * pressure, position, *tangent);
     }
     if (friction()) {
-      addFrictionForces(i, status[k], slip.row(i).transpose(), forces, tangent);
+      addFrictionForces(i, status[k], slip.row(i).transpose(), forces, tangent,
+                        geometric ? &position : nullptr, u);
     }
   }
   noteActive_ = active;
@@ -293,13 +294,15 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
     return;
   }
   recordThreshold();
+  linearisedSlipRowsAt(u); // ALGO_RESO_GEOM='NEWTON': the slip's variation with the geometry
   const std::vector<SlidingNewton> sliding = slidingLinearisations(u, status);
   // The multipliers solving the Schur complement: the normal ones of the augmented-Lagrangian rows
   // in contact and (ALGO_FROT='STANDARD') the tangential ones of the sticking rows. Each has its
   // constraint row B (A, or T_j: the gap, or the slip along friction direction j, vanishes) and its
   // force column C (the derivative of the forces with respect to it): C = B except for the normal
   // multiplier of a node sliding with ALGO_RESO_FROT='NEWTON', whose friction force follows it
-  // (A - mu sum_j e_j T_j, e = q / |q| the sliding direction).
+  // (A - mu sum_j e_j T_j, e = q / |q| the sliding direction), and for the tangential multipliers with
+  // ALGO_RESO_GEOM='NEWTON', whose slip varies with the geometry too (B = T_j + G_j, slipRow).
   struct Multiplier {
     Eigen::Index row;
     int tangent;                      // -1: normal; else the friction direction
@@ -336,11 +339,11 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
   }
   const SparseRows& a = rows_.problem.A;
   const auto constraintRow = [&](const Multiplier& c) -> const SparseRows& {
-    return c.tangent < 0 ? a : frictionRow(c.tangent);
+    return c.tangent < 0 ? a : slipRow(c.tangent);
   };
   // Adds factor x C_j into the dense vector v (the force column of multiplier j).
   const auto addColumn = [&](const Multiplier& c, double factor, auto&& v) {
-    for (SparseRows::InnerIterator it(constraintRow(c), c.row); it; ++it) {
+    for (SparseRows::InnerIterator it(c.tangent < 0 ? a : frictionRow(c.tangent), c.row); it; ++it) {
       v(it.col()) += factor * it.value();
     }
     for (int j = 0; j < 2; ++j) {
@@ -351,7 +354,7 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
       }
     }
   };
-  bool symmetricSchur = true;
+  bool symmetricSchur = !geometricFriction();
   for (const auto& c : contact) {
     symmetricSchur = symmetricSchur && c.frictionCoupling.isZero(0.0);
   }

@@ -62,7 +62,8 @@ public:
   void beginStep(const Eigen::VectorXd& u, double time) override;
   void addForces(const Eigen::VectorXd& u, Eigen::VectorXd& forces,
                  std::vector<Eigen::Triplet<double>>* tangent) override;
-  bool symmetric() const override { return true; }
+  // Unsymmetric with friction and ALGO_RESO_GEOM='NEWTON' (the friction's geometric tangent).
+  bool symmetric() const override { return !geometricFriction(); }
   void correct(const Eigen::VectorXd& u, Eigen::VectorXd& ddu, Eigen::VectorXd& dlambda,
                SaddleSolver& solver) override;
   void store(ResultStep& step) const override;
@@ -133,8 +134,11 @@ private:
   Eigen::Vector2d slidingDirection(Eigen::Index row, char s, const Eigen::Vector2d& slip) const;
   // The tangential pressure of a row in contact with status s at slip `slip` (friction directions).
   Eigen::Vector2d tangentialPressure(Eigen::Index row, char s, const Eigen::Vector2d& slip) const;
+  // `position` (ALGO_RESO_GEOM='NEWTON', with a tangent): the positions at u, for the friction's
+  // geometric tangent.
   void addFrictionForces(Eigen::Index row, char s, const Eigen::Vector2d& slip, Eigen::VectorXd& forces,
-                         std::vector<Eigen::Triplet<double>>* tangent) const;
+                         std::vector<Eigen::Triplet<double>>* tangent, const NodePosition* position,
+                         const Eigen::VectorXd& u) const;
   // The rows of the friction directions (built by frictionPaired: the pairing's tangents, or what
   // SANS_GROUP_NO_FR / DIRE_EXCL_FROT leave of them) and their number per row (0, 1 or 2).
   void frictionPaired();
@@ -186,6 +190,25 @@ private:
   bool geometryConverged();
   void addGeometricTangent(Eigen::Index row, double coefficient, const NodePosition& position,
                            std::vector<Eigen::Triplet<double>>& tangent) const;
+  // Friction with ALGO_RESO_GEOM='NEWTON' (ContinuousGeometricFriction.cpp): M_j = dT_j / dx of a
+  // row's friction directions over its nodes (local (node, component) order, the slave first;
+  // `dofs` -1 where a component has no DOF) and v = u - u_start there.
+  bool geometricFriction() const;
+  struct RowGeometry {
+    std::vector<int> dofs;
+    std::array<Eigen::MatrixXd, 2> m;
+    Eigen::VectorXd v;
+  };
+  RowGeometry rowGeometry(Eigen::Index row, const NodePosition& position, const Eigen::VectorXd& u) const;
+  // w dp/ds T (T + G)^T beyond c T T^T, and w p_j M_j (c = w dp/ds, p the tangential pressure).
+  void addGeometricFrictionTangent(Eigen::Index row, const Eigen::Vector2d& pressure,
+                                   const Eigen::Matrix2d& c, const NodePosition& position,
+                                   const Eigen::VectorXd& u,
+                                   std::vector<Eigen::Triplet<double>>& tangent) const;
+  // The linearised slip rows T_j + G_j at u (slipRows_), and the row of direction j to linearise
+  // the slip with: those, or the friction rows without ALGO_RESO_GEOM='NEWTON'.
+  void linearisedSlipRowsAt(const Eigen::VectorXd& u);
+  const SparseRows& slipRow(int direction) const;
   // The interpenetration of the penalised zones against PENE_MAXI (ADAPT_COEF/TOUT) and the
   // INTERPENETRATION event: false when a penalty was raised (ContinuousPenetration.cpp).
   bool acceptPenetration(const Eigen::VectorXd& u);
@@ -217,6 +240,7 @@ private:
   std::vector<double> lastThreshold_;  // per link: |LAGS_C| at the previous correction (RESI_FROT)
   int frictionIterations_ = 0;
   double noteGeometry_ = -1.0;          // geometricCriterion() at the last addForces
+  std::array<SparseRows, 2> slipRows_;  // linearisedSlipRowsAt
   std::optional<FailurePolicy> policy_; // INTERPENETRATION event
   std::vector<double> penaltyFactor_;   // per zone: the raises of COEF_PENA_CONT
 };

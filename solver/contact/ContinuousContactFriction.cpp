@@ -141,12 +141,15 @@ ContinuousContactConstraint::slidingLinearisations(const Eigen::VectorXd& u,
 
 void ContinuousContactConstraint::addFrictionForces(Eigen::Index row, char s, const Eigen::Vector2d& slip,
                                                     Eigen::VectorXd& forces,
-                                                    std::vector<Eigen::Triplet<double>>* tangent) const {
+                                                    std::vector<Eigen::Triplet<double>>* tangent,
+                                                    const NodePosition* position,
+                                                    const Eigen::VectorXd& u) const {
   const int d = frictionDirections(row);
   const double w = weight_(row);
   const SlidingNewton sliding = slidingNewton(row, s, slip);
+  Eigen::Vector2d p = Eigen::Vector2d::Zero();
   if (s != 0) {
-    Eigen::Vector2d p = tangentialPressure(row, s, slip);
+    p = tangentialPressure(row, s, slip);
     if (sliding.active) { // the condensed multiplier's equation: - beta P r
       p -= sliding.beta * (sliding.r - sliding.e * sliding.e.dot(sliding.r));
     }
@@ -179,13 +182,16 @@ void ContinuousContactConstraint::addFrictionForces(Eigen::Index row, char s, co
   }
   for (int a = 0; a < d; ++a) {
     for (int b = 0; b < d; ++b) {
-      for (SparseRows::InnerIterator p(frictionRow(a), row); p; ++p) {
-        for (SparseRows::InnerIterator q(frictionRow(b), row); q; ++q) {
-          tangent->emplace_back(static_cast<int>(p.col()), static_cast<int>(q.col()),
-                                c(a, b) * p.value() * q.value());
+      for (SparseRows::InnerIterator x(frictionRow(a), row); x; ++x) {
+        for (SparseRows::InnerIterator y(frictionRow(b), row); y; ++y) {
+          tangent->emplace_back(static_cast<int>(x.col()), static_cast<int>(y.col()),
+                                c(a, b) * x.value() * y.value());
         }
       }
     }
+  }
+  if (position != nullptr) { // ALGO_RESO_GEOM='NEWTON': the variation of the rows
+    addGeometricFrictionTangent(row, p, c, *position, u, *tangent);
   }
 }
 
@@ -211,8 +217,8 @@ void ContinuousContactConstraint::updateSlidingPressures(const Eigen::VectorXd& 
     }
     Eigen::Vector2d ds = Eigen::Vector2d::Zero(); // the correction's slip
     for (int j = 0; j < 2; ++j) {
-      if (frictionRow(j).rows() == m) {
-        for (SparseRows::InnerIterator it(frictionRow(j), row); it; ++it) {
+      if (slipRow(j).rows() == m) {
+        for (SparseRows::InnerIterator it(slipRow(j), row); it; ++it) {
           ds(j) += it.value() * ddu(it.col());
         }
       }

@@ -166,9 +166,10 @@ std::string effectsLine(const MechanicalSystem& system, const NewtonSettings& se
              : fmt::format("{} (return mapping)", fmt::join(system.behaviours().relationNames(), ", ")),
       system.behaviours().largeDisplacements() ? " in large displacements (GROT_GDEP)" : "",
       system.excitations().size(),
-      settings.symmetrizeTangent           ? "symmetric (MATR_RIGI_SYME: (K + K^T) / 2)"
-      : system.behaviours().allSymmetric() ? "symmetric"
-                                           : "unsymmetric",
+      settings.symmetrizeTangent ? "symmetric (MATR_RIGI_SYME: (K + K^T) / 2)"
+      : system.behaviours().allSymmetric() && (constraint == nullptr || constraint->symmetric())
+          ? "symmetric"
+          : "unsymmetric",
       settings.tangentMatrix ? "tangent" : "elastic", system.relationCount(),
       constraint != nullptr ? constraint->effects() : std::string("no contact"),
       settings.lineSearch.enabled ? ", line search CORDE" : "",

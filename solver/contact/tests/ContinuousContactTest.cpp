@@ -270,18 +270,25 @@ TEST(ContinuousContact, WhatIsNotImplementedIsRefusedNamingTheKeyword) {
     std::string global;
     std::string zone;
     std::string named;
+    bool threeD = false;
   } cases[] = {
       {", FROTTEMENT='COULOMB'",
        ", COULOMB=0.2, ALGO_FROT='PENALISATION', ADAPTATION='ADAPT_COEF', GLIS_MAXI=0.1", "GLIS_MAXI"},
       {", ALGO_RESO_GEOM='NEWTON', LISSAGE='OUI'", "", "ALGO_RESO_GEOM='NEWTON' and LISSAGE='OUI'"},
-      {", FROTTEMENT='COULOMB', ALGO_RESO_GEOM='NEWTON'", ", COULOMB=0.2",
-       "ALGO_RESO_GEOM='NEWTON' and FROTTEMENT='COULOMB'"},
+      {", FROTTEMENT='COULOMB', ALGO_RESO_GEOM='NEWTON'", ", COULOMB=0.2, INTEGRATION='GAUSS'",
+       "ALGO_RESO_GEOM='NEWTON' and contact points that are not slave nodes (INTEGRATION other than 'AUTO', "
+       "or 'AUTO' on TRIA6 and QUAD8 slave cells)"},
+      {", FROTTEMENT='COULOMB', ALGO_RESO_GEOM='NEWTON'",
+       ", COULOMB=0.2, SANS_GROUP_NO_FR='B_ZMIN', DIRE_EXCL_FROT=(1.0, 0.0, 0.0)",
+       "ALGO_RESO_GEOM='NEWTON' and DIRE_EXCL_FROT in 3D", true},
       {"", ", RESOLUTION='NON', TOLE_INTERP=0.1", "TOLE_INTERP (other than its default 0)"},
   };
   for (const auto& c : cases) {
     Blocks b;
     b.global = c.global;
     b.zone = c.zone;
+    b.threeD = c.threeD;
+    b.cell = c.threeD ? CellType::HEXA8 : CellType::QUAD4;
     const StudyRun r = runStudy("refused", b.mesh(2), b.comm(), true);
     EXPECT_FALSE(passed(r)) << c.named;
     EXPECT_NE(r.message.find("CONTACT_20"), std::string::npos) << c.named;
