@@ -1,6 +1,6 @@
 #pragma once
-// Studies built in C++ for the tests, through the layers a run goes through: a Mesh from the
-// plain arrays of fem::boxMesh, a Model with one modelling on a set of cells, an elastic
+// Studies built in C++ for the tests, through the layers a run goes through (a Mesh from the
+// plain arrays of fem::boxMesh: fem::toMesh): a Model with one modelling on a set of cells, an elastic
 // MaterialField, the RELATION 'ELAS' of every cell. The MechanicalSystem on them numbers the
 // unknowns with the run's DofMap and assembles with its VolumeAssembler and StiffnessMatrix.
 
@@ -15,23 +15,6 @@
 #include <vector>
 
 namespace stella::testing {
-
-// The nodes (node i of the plain mesh is node i of the Mesh) and cells of `p`.
-inline std::shared_ptr<Mesh> meshOf(const fem::PlainMesh& p) {
-  auto mesh = std::make_shared<Mesh>();
-  mesh->setDimension(p.dimension);
-  for (int n = 0; n < p.nodeCount(); ++n) {
-    Point3 x{0, 0, 0};
-    for (int d = 0; d < p.dimension; ++d) {
-      x[static_cast<std::size_t>(d)] = p.coordinates(n, d);
-    }
-    mesh->addNode(x);
-  }
-  for (int c = 0; c < p.cellCount(); ++c) {
-    mesh->addCell(p.cellType, std::span<const NodeId>(p.cell(c), static_cast<std::size_t>(p.nodesPerCell())));
-  }
-  return mesh;
-}
 
 inline std::vector<CellId> allCells(const Mesh& mesh) {
   std::vector<CellId> all;

@@ -17,20 +17,7 @@ namespace {
 
 std::shared_ptr<Mesh> boxOf(CellType type, int n) {
   const bool threeD = dimension(type) == 3;
-  const fem::PlainMesh p = fem::boxMesh(type, {n, n + 1, threeD ? n : 1}, {1.0, 1.2, 0.8});
-  auto mesh = std::make_shared<Mesh>();
-  mesh->setDimension(p.dimension);
-  for (int i = 0; i < p.nodeCount(); ++i) {
-    Point3 x{0, 0, 0};
-    for (int d = 0; d < p.dimension; ++d) {
-      x[static_cast<std::size_t>(d)] = p.coordinates(i, d);
-    }
-    mesh->addNode(x);
-  }
-  for (int c = 0; c < p.cellCount(); ++c) {
-    mesh->addCell(p.cellType, std::span<const NodeId>(p.cell(c), static_cast<std::size_t>(p.nodesPerCell())));
-  }
-  return mesh;
+  return fem::toMesh(fem::boxMesh(type, {n, n + 1, threeD ? n : 1}, {1.0, 1.2, 0.8}));
 }
 
 struct Study {

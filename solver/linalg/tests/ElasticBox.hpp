@@ -41,7 +41,7 @@ struct ElasticBox {
   Eigen::MatrixXd dense;
   std::vector<bool> clamped; // per physical equation (elimination)
 
-  ElasticBox(const fem::PlainMesh& p, const BoxClamp& c) : mesh(meshOf(p)) {
+  ElasticBox(const fem::PlainMesh& p, const BoxClamp& c) : mesh(fem::toMesh(p)) {
     const bool threeD = p.dimension == 3;
     model = modelOn(mesh, threeD ? "3D" : "D_PLAN");
     const int nc = model->components;

@@ -27,7 +27,7 @@ struct Plate {
 // cells in increasing y: the force -3 along X), with a spring (1, 1) on every node when `held`.
 Plate plate(bool held) {
   Plate p;
-  p.mesh = testing::meshOf(fem::boxMesh(CellType::QUAD4, {4, 2, 1}, {2.0, 1.0, 1.0}));
+  p.mesh = fem::toMesh(fem::boxMesh(CellType::QUAD4, {4, 2, 1}, {2.0, 1.0, 1.0}));
   const NodeId nodes = p.mesh->nodeCount();
   std::vector<CellId> volumes = testing::allCells(*p.mesh);
   std::vector<std::pair<double, NodeId>> right;

@@ -127,7 +127,7 @@ Errors solveLame(CellType type, fem::Modelling m, int divisions, Material mat = 
   } else {
     collectInnerEdges(param, skin);
   }
-  auto mesh = testing::meshOf(ring);
+  auto mesh = fem::toMesh(ring);
   std::vector<CellId> pressed;
   const int perCell = nodeCount(skin.type);
   for (std::size_t k = 0; k < skin.connectivity.size(); k += static_cast<std::size_t>(perCell)) {
