@@ -124,35 +124,17 @@ StiffnessMatrix::StiffnessMatrix(const DofMap& dofs, const Mesh& mesh, std::span
 StiffnessMatrix::StiffnessMatrix(const Eigen::SparseMatrix<double>& k, linalg::Storage storage) {
   const int n = static_cast<int>(k.rows());
   std::vector<Eigen::Triplet<double>> t;
-  t.reserve(static_cast<std::size_t>(k.nonZeros()) + static_cast<std::size_t>(n));
+  t.reserve(static_cast<std::size_t>(k.nonZeros()));
   for (int j = 0; j < k.outerSize(); ++j) {
     for (Eigen::SparseMatrix<double>::InnerIterator it(k, j); it; ++it) {
-      if (storage == linalg::Storage::Full || it.col() >= it.row()) {
-        t.emplace_back(static_cast<int>(it.row()), static_cast<int>(it.col()), it.value());
-      }
+      t.emplace_back(static_cast<int>(it.row()), static_cast<int>(it.col()), it.value());
     }
   }
-  for (int i = 0; i < n; ++i) {
-    t.emplace_back(i, i, 0.0); // every diagonal entry in the pattern
-  }
-  Eigen::SparseMatrix<double, Eigen::RowMajor> a(n, n);
-  a.setFromTriplets(t.begin(), t.end());
-  std::vector<std::pair<int, int>> keys;
-  std::vector<double> values;
-  keys.reserve(static_cast<std::size_t>(a.nonZeros()));
-  for (int i = 0; i < n; ++i) {
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(a, i); it; ++it) {
-      keys.emplace_back(i, static_cast<int>(it.col()));
-      values.push_back(it.value());
-    }
-  }
-  auto p = patternOf(n, storage, keys);
+  cells_ = linalg::sparseMatrixOf(n, storage, t);
   diagonal_.resize(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
-    diagonal_[static_cast<std::size_t>(i)] = p->find(i, i);
+    diagonal_[static_cast<std::size_t>(i)] = cells_.pattern().find(i, i);
   }
-  cells_ = linalg::SparseMatrix(p);
-  cells_.values() = std::move(values);
   extra_ = linalg::SparseMatrix(emptyPattern(n, storage));
   patternId_ = newPatternId();
 }

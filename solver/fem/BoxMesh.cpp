@@ -3,6 +3,7 @@
 #include "solver/fem/BoxMesh.hpp"
 
 #include "solver/fem/ReferenceElement.hpp"
+#include "solver/mesh/Mesh.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -140,6 +141,22 @@ PlainMesh boxMesh(CellType type, std::array<int, 3> divisions, std::array<double
   mesh.coordinates.resize(static_cast<Eigen::Index>(nodes.size()), dim);
   for (std::size_t n = 0; n < nodes.size(); ++n) {
     mesh.coordinates.row(static_cast<Eigen::Index>(n)) = nodes[n].head(dim).transpose();
+  }
+  return mesh;
+}
+
+std::shared_ptr<Mesh> toMesh(const PlainMesh& p) {
+  auto mesh = std::make_shared<Mesh>();
+  mesh->setDimension(p.dimension);
+  for (int n = 0; n < p.nodeCount(); ++n) {
+    Point3 x{0, 0, 0};
+    for (int d = 0; d < p.dimension; ++d) {
+      x[static_cast<std::size_t>(d)] = p.coordinates(n, d);
+    }
+    mesh->addNode(x);
+  }
+  for (int c = 0; c < p.cellCount(); ++c) {
+    mesh->addCell(p.cellType, std::span<const NodeId>(p.cell(c), static_cast<std::size_t>(p.nodesPerCell())));
   }
   return mesh;
 }

@@ -9,7 +9,12 @@
 
 #include <Eigen/Dense>
 #include <array>
+#include <memory>
 #include <vector>
+
+namespace stella {
+class Mesh;
+}
 
 namespace stella::fem {
 
@@ -29,5 +34,9 @@ struct PlainMesh {
 // Box [0, lengths[0]] x [0, lengths[1]] (x [0, lengths[2]]) with divisions[i] hexahedra
 // (quadrangles) along each axis, cut into cells of `type` (2D types give a 2D mesh).
 PlainMesh boxMesh(CellType type, std::array<int, 3> divisions, std::array<double, 3> lengths);
+
+// The same nodes and cells as a Mesh (node i and cell c of `p` are node i and cell c; default
+// names N1..., M1...), for the tests and benchmarks that go through the model layers.
+std::shared_ptr<Mesh> toMesh(const PlainMesh& p);
 
 } // namespace stella::fem

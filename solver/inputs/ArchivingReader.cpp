@@ -4,8 +4,8 @@
 
 #include "catalog/KeywordTree.hpp"
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/functions/RealFunction.hpp"
-#include "solver/session/OperatorRegistry.hpp"
 
 namespace stella {
 

@@ -3,8 +3,8 @@
 #include "solver/inputs/CommandInputs.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/model/RepeatedConditions.hpp"
-#include "solver/session/OperatorRegistry.hpp"
 
 #include <fmt/format.h>
 

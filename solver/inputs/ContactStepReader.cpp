@@ -5,7 +5,7 @@
 
 #include "catalog/KeywordTree.hpp"
 #include "interpreter/Diagnostics.hpp"
-#include "solver/session/OperatorRegistry.hpp"
+#include "solver/database/ConceptStore.hpp"
 
 namespace stella {
 

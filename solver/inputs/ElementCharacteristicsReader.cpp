@@ -3,9 +3,9 @@
 #include "solver/inputs/ElementCharacteristicsReader.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/inputs/Selection.hpp"
 #include "solver/model/Model.hpp"
-#include "solver/session/OperatorRegistry.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>

@@ -3,9 +3,9 @@
 #include "solver/inputs/StatNonLineInputs.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/functions/RealFunction.hpp"
 #include "solver/nonlinear/ResultFields.hpp"
-#include "solver/session/OperatorRegistry.hpp"
 
 #include <cmath>
 #include <fmt/format.h>

@@ -6,9 +6,9 @@
 
 #include "catalog/KeywordTree.hpp"
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/functions/RealFunction.hpp"
 #include "solver/inputs/Selection.hpp"
-#include "solver/session/OperatorRegistry.hpp"
 
 #include <fmt/format.h>
 

@@ -59,7 +59,7 @@ struct SolverOptions {
 bool petscAvailable();
 
 // The matrix is singular: `equation` is the null pivot's equation (-1 if the backend could not
-// tell), to be named as node and DOF through the DofNumbering.
+// tell), to be named as node and DOF through the DofMap (SaddleSolver: SOLVE_1).
 class SingularMatrixError : public std::runtime_error {
 public:
   SingularMatrixError(std::string backend, int equation)

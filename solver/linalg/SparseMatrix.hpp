@@ -1,12 +1,10 @@
 #pragma once
 // Sparse matrices in compressed rows (CSR), stored full or as the upper triangle only (for
-// symmetric matrices). The pattern is built once from the cells' connectivity (through a node
-// graph, then expanded to DOFs) plus extra couplings (Lagrange multipliers); element matrices
-// are then scattered through a precomputed cell -> position map, without any search.
-
-#include "solver/linalg/DofNumbering.hpp"
+// symmetric matrices). The run builds its patterns in solver/assembly (StiffnessMatrix from the
+// DofMap and the cells, the bordered matrix in SaddleSolver); sparseMatrixOf makes one from entries.
 
 #include <Eigen/Dense>
+#include <Eigen/Sparse>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -27,19 +25,6 @@ struct SparsePattern {
   // pass i <= j).
   std::int64_t find(int i, int j) const;
 };
-
-// Cells as a list of node lists: nodes of cell c are connectivity[offsets[c] .. offsets[c+1]).
-struct CellList {
-  std::span<const int> connectivity;
-  std::span<const std::int64_t> offsets;
-  int cellCount() const { return static_cast<int>(offsets.size()) - 1; }
-};
-
-// Pattern of the DOFs of `numbering` coupled by the cells, plus `extra` DOF pairs (both (i, j)
-// and (j, i) are added), plus every diagonal entry.
-std::shared_ptr<const SparsePattern> buildPattern(const DofNumbering& numbering, const CellList& cells,
-                                                  std::span<const std::pair<int, int>> extra,
-                                                  Storage storage);
 
 class SparseMatrix {
 public:
@@ -65,34 +50,9 @@ private:
   std::vector<double> values_;
 };
 
-// Precomputed positions of every cell's element matrix in the pattern: for each cell, each
-// local row DOF and each node of the cell, the offset within the row of the first stored column
-// of that node's DOF block (16 bits: rows hold at most 65534 entries). Cells carry all physical
-// components of their nodes (element DOF order: node by node, component by component).
-class ElementScatter {
-public:
-  ElementScatter(const SparsePattern& pattern, const DofNumbering& numbering, const CellList& cells);
-  // values += ke (nodes*components square) for `cell`.
-  void add(int cell, const Eigen::Ref<const Eigen::MatrixXd>& ke, std::vector<double>& values) const;
-  // Global DOFs of a cell's local DOFs.
-  std::span<const int> dofs(int cell) const {
-    const auto b = static_cast<std::size_t>(rowStart_[static_cast<std::size_t>(cell)]);
-    const auto e = static_cast<std::size_t>(rowStart_[static_cast<std::size_t>(cell) + 1]);
-    return std::span<const int>(rows_).subspan(b, e - b);
-  }
-  std::size_t memoryBytes() const {
-    return offsets_.capacity() * sizeof(std::uint16_t) + rows_.capacity() * sizeof(int) +
-           (rowStart_.capacity() + offsetStart_.capacity()) * sizeof(std::int64_t);
-  }
-
-private:
-  static constexpr std::uint16_t notStored = 0xFFFF;
-  const SparsePattern* pattern_;
-  int components_;
-  std::vector<std::int64_t> rowStart_;    // per cell into rows_
-  std::vector<int> rows_;                 // global DOF of each local DOF
-  std::vector<std::uint16_t> offsets_;    // per (local row, node): offset of the block in the row
-  std::vector<std::int64_t> offsetStart_; // per cell into offsets_
-};
+// The n x n matrix of `entries` (row, column, value; duplicates summed; in Upper storage the
+// entries below the diagonal are dropped), every diagonal entry in the pattern (zero if not given).
+// Explicit zeros keep their place in the pattern.
+SparseMatrix sparseMatrixOf(int n, Storage storage, const std::vector<Eigen::Triplet<double>>& entries);
 
 } // namespace stella::linalg

@@ -2,6 +2,7 @@
 // K_T_D_N) on a model (solver/model/ElementCharacteristics).
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/inputs/ElementCharacteristicsReader.hpp"
 #include "solver/model/Model.hpp"
 #include "solver/session/OperatorRegistry.hpp"

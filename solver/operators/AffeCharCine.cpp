@@ -1,6 +1,7 @@
 // AFFE_CHAR_CINE: displacements imposed by elimination (MECA_IMPO).
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/inputs/LoadReader.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 

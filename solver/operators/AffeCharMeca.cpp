@@ -1,6 +1,7 @@
 // AFFE_CHAR_MECA: dualised kinematic conditions and loads on a model (solver/inputs/LoadReader).
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/inputs/LoadReader.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"

@@ -2,6 +2,7 @@
 // earlier one on shared cells). Command variables (AFFE_VARC) are refused as not implemented yet.
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/database/MeshConcept.hpp"
 #include "solver/inputs/Selection.hpp"
 #include "solver/model/MaterialField.hpp"

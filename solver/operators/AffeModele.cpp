@@ -1,6 +1,7 @@
 // AFFE_MODELE: assigns mechanical modelisations to the cells of a mesh (solver/model/ModelBuilder).
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/database/MeshConcept.hpp"
 #include "solver/inputs/Selection.hpp"
 #include "solver/model/ModelBuilder.hpp"

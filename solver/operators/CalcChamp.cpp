@@ -17,6 +17,7 @@
 #include "interpreter/Diagnostics.hpp"
 #include "solver/assembly/ExternalForces.hpp"
 #include "solver/assembly/NodalForces.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/functions/RealFunction.hpp"
 #include "solver/inputs/Selection.hpp"

@@ -6,11 +6,13 @@
 // default). MAILLAGE is the result's mesh. INFO=2 prints the range of PRES of each step.
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/model/Model.hpp"
 #include "solver/operators/MeshOperatorUtil.hpp"
 #include "solver/post/DerivedFields.hpp"
 #include "solver/post/SkinPressure.hpp"
+#include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 
 #include <fmt/format.h>

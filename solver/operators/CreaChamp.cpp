@@ -6,6 +6,7 @@
 // steps (TYPE_MAXI) are refused by name as not implemented yet.
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/inputs/FieldSelection.hpp"
 #include "solver/post/FieldConcept.hpp"
 #include "solver/session/OperatorRegistry.hpp"

@@ -7,6 +7,7 @@
 #include "solver/mesh/MeshConversion.hpp"
 #include "solver/mesh/MeshSummary.hpp"
 #include "solver/operators/MeshOperatorUtil.hpp"
+#include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 
 namespace stella {

@@ -3,6 +3,7 @@
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/contact/ContactDefinition.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/inputs/ContactReader.hpp"
 #include "solver/model/Model.hpp"
 #include "solver/operators/CoincidentNodesAlarm.hpp"

@@ -2,6 +2,7 @@
 // VALE_PARA/VALE_FONC lists), with INTERPOL and PROL_GAUCHE/PROL_DROITE.
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/functions/RealFunction.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 

@@ -4,6 +4,7 @@
 // implemented yet.
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/database/MeshConcept.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/inputs/FieldSelection.hpp"

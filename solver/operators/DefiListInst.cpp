@@ -3,6 +3,7 @@
 // INTERPENETRATION with ADAPT_COEF_PENA (PENE_MAXI, COEF_MAXI) or ARRET.
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/functions/InstantList.hpp"
 #include "solver/functions/RealFunction.hpp"
 #include "solver/session/OperatorRegistry.hpp"

@@ -7,12 +7,14 @@
 // and NOM_CMP selections; GROUP_NO / GROUP_MA restrict the rows of FORMAT='RESULTAT'. Gauss points get the
 // coordinates of the code_aster RIGI family.
 
+#include "solver/database/ConceptStore.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/fem/Quadrature.hpp"
 #include "solver/io/MeshIO.hpp"
 #include "solver/io/ResultWriters.hpp"
 #include "solver/io/RigiPoints.hpp"
 #include "solver/operators/MeshOperatorUtil.hpp"
+#include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 
 #include <fmt/format.h>

@@ -2,6 +2,7 @@
 // the result file (unit 8) by default, after FILTRE, NOM_PARA (columns) and TRI (order).
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/inputs/TableFilter.hpp"
 #include "solver/post/Table.hpp"
 #include "solver/session/OperatorRegistry.hpp"

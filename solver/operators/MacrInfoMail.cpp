@@ -3,6 +3,7 @@
 
 #include "solver/mesh/MeshSummary.hpp"
 #include "solver/operators/MeshOperatorUtil.hpp"
+#include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 
 namespace stella {

@@ -2,6 +2,7 @@
 // results DEPL and SIEF_ELGA in an evol_elas from NUME_ORDRE 1.
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/functions/InstantList.hpp"
 #include "solver/inputs/CommandInputs.hpp"

@@ -5,8 +5,8 @@
 
 #include "catalog/KeywordTree.hpp"
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/database/MeshConcept.hpp"
-#include "solver/session/OperatorRegistry.hpp"
 
 #include <string>
 #include <vector>

@@ -4,12 +4,14 @@
 // DEFORME moves the nodes by the DEPL field of a result's step, then TRANSLATION, ROTATION,
 // ECHELLE and SYMETRIE move the nodes. Other operations are refused as not implemented yet.
 
+#include "solver/database/ConceptStore.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/inputs/FieldSelection.hpp"
 #include "solver/mesh/CellOrientation.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 #include "solver/mesh/MeshTransform.hpp"
 #include "solver/operators/MeshOperatorUtil.hpp"
+#include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 
 #include <fmt/format.h>

@@ -16,6 +16,7 @@
 // TYPE_CHAM '*_GENE' and LIST_ORDRE are refused as not implemented yet.
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/fem/Quadrature.hpp"
 #include "solver/fem/ReferenceElement.hpp"

@@ -13,6 +13,7 @@
 // TRAC_NOR / TRAC_DIR, MOMENT and ELEM_PRINCIPAUX are refused as not implemented yet.
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/functions/RealFunction.hpp"
 #include "solver/inputs/FieldSelection.hpp"

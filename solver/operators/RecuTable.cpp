@@ -1,6 +1,7 @@
 // RECU_TABLE: a copy of a table attached to a result (NOM_TABLE), as a table concept.
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/post/Table.hpp"
 #include "solver/session/OperatorRegistry.hpp"

@@ -11,6 +11,7 @@
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/contact/ContactStepConstraint.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/inputs/ArchivingReader.hpp"
 #include "solver/inputs/CommandInputs.hpp"

@@ -6,12 +6,12 @@
 // component. CARTE, GENE, OBJET, TEST_NAN and MAILLAGE are refused as not implemented yet.
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/inputs/FieldSelection.hpp"
 #include "solver/inputs/TestKeywords.hpp"
 #include "solver/post/FieldConcept.hpp"
 #include "solver/post/TestReport.hpp"
 #include "solver/session/OperatorRegistry.hpp"
-#include "solver/session/Session.hpp"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -30,7 +30,8 @@ void testParameter(OperatorCall& call, const KeywordTree& occ, const Result& res
         occ.locationOf("PARA")));
   }
   (void)result;
-  reportTest(call.session, {{"RESULTAT", name}, {"NUME_ORDRE", std::to_string(step.number)}, {"PARA", para}},
+  reportTest(call.testReport(),
+             {{"RESULTAT", name}, {"NUME_ORDRE", std::to_string(step.number)}, {"PARA", para}},
              valueTestFromKeywords(occ, it->second, para));
 }
 
@@ -108,7 +109,7 @@ void testFieldValue(OperatorCall& call, const KeywordTree& occ, const Mesh& mesh
   if (occ.text("VALE_ABS") == "OUI") {
     value = std::fabs(value);
   }
-  reportTest(call.session, header, valueTestFromKeywords(occ, value, fieldName));
+  reportTest(call.testReport(), header, valueTestFromKeywords(occ, value, fieldName));
 }
 
 void testResu(OperatorCall& call, const KeywordTree& occ) {

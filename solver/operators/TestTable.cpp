@@ -2,12 +2,12 @@
 // column) against VALE_CALC and a reference, printing OK/NOOK lines.
 
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/inputs/TableFilter.hpp"
 #include "solver/inputs/TestKeywords.hpp"
 #include "solver/post/Table.hpp"
 #include "solver/post/TestReport.hpp"
 #include "solver/session/OperatorRegistry.hpp"
-#include "solver/session/Session.hpp"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -62,7 +62,7 @@ Value runTestTable(OperatorCall& call) {
                       : (f.has("VALE_I") ? std::to_string(f.integer("VALE_I")) : f.textOr("VALE_K", ""));
     header.emplace_back(f.text("NOM_PARA"), f.text("CRIT_COMP") + " " + value);
   }
-  reportTest(call.session, header, valueTestFromKeywords(kw, computed, para));
+  reportTest(call.testReport(), header, valueTestFromKeywords(kw, computed, para));
   return Value();
 }
 

@@ -111,7 +111,7 @@ Value Session::checkPlaceholder(const std::string& command, const CallArguments&
   c->type = kUncheckedConceptType;
   c->definedAt = args.callLocation;
   if (!target.empty()) {
-    concepts_[target] = c;
+    concepts_.put(target, c);
   }
   return Value(c);
 }

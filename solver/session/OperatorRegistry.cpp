@@ -48,4 +48,8 @@ Value OperatorCall::makeConcept(std::shared_ptr<ConceptData> data) const {
   return Value(c);
 }
 
+TestReportSink& OperatorCall::testReport() const {
+  return session;
+}
+
 } // namespace stella

@@ -14,6 +14,7 @@
 namespace stella {
 
 class Session;
+class TestReportSink;
 
 // Everything an operator receives for one call.
 struct OperatorCall {
@@ -28,6 +29,9 @@ struct OperatorCall {
   // A new concept of the call's result type named after the assignment target (or the
   // reused concept, whose data is replaced).
   Value makeConcept(std::shared_ptr<ConceptData> data) const;
+  // Where TEST_RESU and TEST_TABLE report their lines and OK/NOOK counts (the session's
+  // result and message files), without the rest of the Session.
+  TestReportSink& testReport() const;
 };
 
 using OperatorFunction = Value (*)(OperatorCall& call);
@@ -43,12 +47,6 @@ public:
 private:
   std::map<std::string, std::pair<OperatorFunction, std::string>> operators_;
 };
-
-// Data of a concept, typed: returns the concept's data as T or throws UserError naming the
-// keyword when the concept holds no such data (e.g. a concept made by `stella check`).
-template <class T> std::shared_ptr<T> conceptData(const std::shared_ptr<Concept>& c) {
-  return std::dynamic_pointer_cast<T>(c->data);
-}
 
 } // namespace stella
 

@@ -297,7 +297,7 @@ Value Session::callCommandOnce(const std::string& command, const CallArguments& 
     if (made->name.empty()) {
       made->name = target;
     }
-    concepts_[made->name] = made;
+    concepts_.put(made->name, made);
   }
   // The summary table names the file without its folders, so its columns stay aligned.
   const std::string shortLocation =

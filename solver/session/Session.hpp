@@ -7,6 +7,7 @@
 
 #include "interpreter/CommandHandler.hpp"
 #include "interpreter/Diagnostics.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/post/TestReportSink.hpp"
 
 #include <chrono>
@@ -136,7 +137,7 @@ public:
   void markFinished() { finished_ = true; }
 
   // Every concept made so far, by name (the last one of a name wins).
-  const std::map<std::string, std::shared_ptr<Concept>>& concepts() const { return concepts_; }
+  const ConceptStore& concepts() const { return concepts_; }
 
   // Called by operators that keep results after a failure, so the message file can say where
   // they are.
@@ -163,7 +164,7 @@ private:
   mutable std::vector<int> opened_;
   SessionCounts counts_;
   std::vector<CommandTiming> timings_;
-  std::map<std::string, std::shared_ptr<Concept>> concepts_;
+  ConceptStore concepts_;
   std::vector<std::string> keptResults_;
   std::vector<KeptFile> keptFiles_;
   std::shared_ptr<Concept> inProgress_;

@@ -7,7 +7,7 @@
 // give the PETIT forces to O(strain).
 
 #include "solver/assembly/MechanicalSystem.hpp"
-#include "solver/assembly/tests/BoxStudy.hpp"
+#include "solver/assembly/tests/ElasticStudy.hpp"
 #include "solver/model/ModelBuilder.hpp"
 
 #include <gtest/gtest.h>
@@ -37,7 +37,7 @@ struct Study {
 Study study(const Case& k, fem::StrainMeasure measure) {
   Study s;
   const bool threeD = dimension(k.type) == 3;
-  s.mesh = testing::meshOfBox(fem::boxMesh(k.type, {2, 2, threeD ? 2 : 1}, kLengths));
+  s.mesh = fem::toMesh(fem::boxMesh(k.type, {2, 2, threeD ? 2 : 1}, kLengths));
   s.model = std::make_shared<Model>(s.mesh);
   std::vector<CellId> all;
   for (CellId c = 0; c < s.mesh->cellCount(); ++c) {
@@ -46,7 +46,7 @@ Study study(const Case& k, fem::StrainMeasure measure) {
   assignModelling(*s.model, all, k.modelling, {});
   finishModel(*s.model, {});
   s.system = std::make_unique<MechanicalSystem>(
-      s.model, testing::elasticOn(s.mesh, kYoung, kNu), std::vector<Excitation>{},
+      s.model, testing::elasticMaterialOn(s.mesh, kYoung, kNu), std::vector<Excitation>{},
       std::vector<std::string>(s.model->cells.size(), "ELAS"), SourceLocation{}, nullptr,
       std::vector<fem::StrainMeasure>(s.model->cells.size(), measure));
   s.zero = zeroPointState(*s.model, s.system->behaviours().maxInternalVariables());

@@ -5,7 +5,7 @@
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/assembly/MechanicalSystem.hpp"
-#include "solver/assembly/tests/BoxStudy.hpp"
+#include "solver/assembly/tests/ElasticStudy.hpp"
 #include "solver/model/ModelBuilder.hpp"
 #include "solver/nonlinear/ElasticSolve.hpp"
 
@@ -18,7 +18,7 @@ namespace {
 
 std::shared_ptr<Mesh> boxOf(CellType type, int n) {
   const bool threeD = dimension(type) == 3;
-  return testing::meshOfBox(fem::boxMesh(type, {n, n + 1, threeD ? n : 1}, {1.0, 1.2, 0.8}));
+  return fem::toMesh(fem::boxMesh(type, {n, n + 1, threeD ? n : 1}, {1.0, 1.2, 0.8}));
 }
 
 struct Study {
@@ -61,7 +61,7 @@ Study study(CellType type, int n, bool eliminate, bool hold = true) {
       load->nodalForces.push_back({node, 1, 1.0});
     }
   }
-  auto field = testing::elasticOn(s.mesh, 210000.0, 0.3);
+  auto field = testing::elasticMaterialOn(s.mesh, 210000.0, 0.3);
   std::vector<Excitation> ex{{load, nullptr, nullptr}};
   if (eliminate) {
     ex.push_back({nullptr, kin, nullptr});

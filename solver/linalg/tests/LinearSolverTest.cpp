@@ -1,12 +1,11 @@
-// Linear algebra tests: pattern and scatter assembly against dense assembly; every backend on
+// Linear algebra tests: the run's in-place assembly (StiffnessMatrix, DofMap numbering) against a
+// dense assembly of the element matrices; every backend on
 // SPD, saddle-point (dualised Lagrange) and unsymmetric systems against dense Eigen solutions,
 // with refactorisation and blocks of right-hand sides; singular matrices reported with the
 // equation of a free DOF.
 
 #include "solver/linalg/LinearSolver.hpp"
-#include "solver/behaviour/Elasticity.hpp"
-#include "solver/fem/BoxMesh.hpp"
-#include "solver/fem/ElementMatrices.hpp"
+#include "solver/linalg/tests/ElasticBox.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,64 +14,21 @@
 namespace stella::linalg {
 namespace {
 
-// Plane-strain elasticity of a 4 x 3 QUAD4 mesh of [0,1]^2, optionally with Lagrange
-// multipliers blocking DX (and DY unless floatY) of the nodes on x = 0.
-struct Problem {
-  fem::PlainMesh mesh = fem::boxMesh(CellType::QUAD8, {4, 3, 1}, {1.0, 1.0, 1.0});
-  std::vector<std::int64_t> offsets;
-  std::unique_ptr<DofNumbering> numbering;
-  std::vector<std::pair<int, int>> constraints; // (multiplier, constrained dof)
-  Eigen::MatrixXd dense;
-  SparseMatrix matrix;
+using stella::testing::BoxClamp;
+using stella::testing::Clamp;
+using stella::testing::ElasticBox;
 
-  Problem(bool lagrange, bool floatY, Storage storage) {
-    numbering = std::make_unique<DofNumbering>(mesh.nodeCount(), 2);
-    for (int c = 0; c <= mesh.cellCount(); ++c) {
-      offsets.push_back(static_cast<std::int64_t>(c) * mesh.nodesPerCell());
-    }
-    if (lagrange) {
-      for (int a = 0; a < mesh.nodeCount(); ++a) {
-        if (std::abs(mesh.coordinates(a, 0)) < 1e-12) {
-          for (int comp = 0; comp < (floatY ? 1 : 2); ++comp) {
-            const int l = numbering->addLagrange(Component::LAGR, a, static_cast<Component>(comp));
-            constraints.emplace_back(l, numbering->dof(a, comp));
-          }
-        }
-      }
-    }
-    const CellList cells{mesh.connectivity, offsets};
-    auto pattern = buildPattern(*numbering, cells, constraints, storage);
-    matrix = SparseMatrix(pattern);
-    const ElementScatter scatter(*pattern, *numbering, cells);
-    const int n = numbering->dofCount();
-    dense = Eigen::MatrixXd::Zero(n, n);
-    const Eigen::MatrixXd d = behaviour::elasticMatrix(fem::Modelling::PlaneStrain, {1000.0, 0.3});
-    fem::ElementKinematics kin;
-    Eigen::MatrixXd ke;
-    for (int e = 0; e < mesh.cellCount(); ++e) {
-      Eigen::MatrixXd x(mesh.nodesPerCell(), 2);
-      for (int a = 0; a < mesh.nodesPerCell(); ++a) {
-        x.row(a) = mesh.coordinates.row(mesh.cell(e)[a]);
-      }
-      fem::computeKinematics(mesh.cellType, fem::Modelling::PlaneStrain, x, kin);
-      fem::stiffness(kin, d, ke);
-      scatter.add(e, ke, matrix.values());
-      const auto dofs = scatter.dofs(e);
-      for (std::size_t i = 0; i < dofs.size(); ++i) {
-        for (std::size_t j = 0; j < dofs.size(); ++j) {
-          dense(dofs[i], dofs[j]) += ke(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
-        }
-      }
-    }
-    for (const auto& [l, dof] : constraints) {
-      matrix.add(std::min(l, dof), std::max(l, dof), 1.0);
-      if (storage == Storage::Full) {
-        matrix.add(std::max(l, dof), std::min(l, dof), 1.0);
-      }
-      dense(l, dof) = dense(dof, l) = 1.0;
-    }
-  }
-};
+// Plane-strain elasticity of a 4 x 3 QUAD8 mesh of [0,1]^2 (E = 1000, nu = 0.3), numbered and
+// assembled by the run's DofMap and StiffnessMatrix, optionally with Lagrange multipliers
+// blocking DX (and DY unless floatY) of the nodes on x = 0.
+ElasticBox problem(bool lagrange, bool floatY, Storage storage) {
+  BoxClamp c;
+  c.kind = lagrange ? Clamp::Dualised : Clamp::Free;
+  c.components = floatY ? 1 : 2;
+  c.storage = storage;
+  c.withDense = true;
+  return ElasticBox(fem::boxMesh(CellType::QUAD8, {4, 3, 1}, {1.0, 1.0, 1.0}), c);
+}
 
 Eigen::MatrixXd rightHandSides(int n) {
   Eigen::MatrixXd b(n, 3);
@@ -105,9 +61,9 @@ void expectSolves(LinearSolver& s, const SparseMatrix& a, const Eigen::MatrixXd&
   }
 }
 
-TEST(SparseAssembly, ScatterMatchesDenseAssemblyInBothStorages) {
+TEST(SparseAssembly, InPlaceAssemblyMatchesDenseAssemblyInBothStorages) {
   for (Storage st : {Storage::Full, Storage::Upper}) {
-    Problem p(true, false, st);
+    ElasticBox p = problem(true, false, st);
     EXPECT_LT((p.matrix.toDense() - p.dense).cwiseAbs().maxCoeff(), 1e-12 * p.dense.cwiseAbs().maxCoeff());
     const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(p.matrix.size(), -1.0, 2.0);
     EXPECT_LT((p.matrix.multiply(x) - p.dense * x).norm(), 1e-12 * (p.dense * x).norm());
@@ -116,7 +72,7 @@ TEST(SparseAssembly, ScatterMatchesDenseAssemblyInBothStorages) {
 
 TEST(LinearSolver, SymmetricPositiveDefiniteEveryBackend) {
   // SPD: the elasticity matrix plus a small mass-like diagonal
-  Problem p(false, false, Storage::Upper);
+  ElasticBox p = problem(false, false, Storage::Upper);
   for (int i = 0; i < p.matrix.size(); ++i) {
     p.matrix.add(i, i, 10.0);
     p.dense(i, i) += 10.0;
@@ -136,7 +92,7 @@ TEST(LinearSolver, SymmetricPositiveDefiniteEveryBackend) {
 // of 2 K in expectSolves keeps the preconditioner of K (REAC_PRECOND: the first solves converged
 // in a few iterations) and still converges. With REAC_PRECOND = 1 it is rebuilt: same solutions.
 TEST(LinearSolver, GcpcWithSinglePrecisionPreconditioner) {
-  Problem p(false, false, Storage::Upper);
+  ElasticBox p = problem(false, false, Storage::Upper);
   for (int i = 0; i < p.matrix.size(); ++i) {
     p.matrix.add(i, i, 10.0);
     p.dense(i, i) += 10.0;
@@ -160,7 +116,7 @@ TEST(LinearSolver, GcpcWithSinglePrecisionPreconditioner) {
 }
 
 TEST(LinearSolver, SaddlePointWithLagrangeMultipliers) {
-  Problem p(true, false, Storage::Upper);
+  ElasticBox p = problem(true, false, Storage::Upper);
   for (SolverMethod m : {SolverMethod::Mumps, SolverMethod::MultFront, SolverMethod::Ldlt}) {
     SolverOptions o;
     o.method = m;
@@ -177,7 +133,7 @@ TEST(LinearSolver, SaddlePointWithLagrangeMultipliers) {
 // solve, including empty columns and the multipliers' rows of a saddle-point system.
 TEST(LinearSolver, SparseRightHandSideBlocksSolveLikeDenseOnes) {
   for (bool lagrange : {false, true}) {
-    Problem p(lagrange, false, Storage::Upper);
+    ElasticBox p = problem(lagrange, false, Storage::Upper);
     if (!lagrange) {
       for (int i = 0; i < p.matrix.size(); ++i) {
         p.matrix.add(i, i, 10.0);
@@ -206,10 +162,10 @@ TEST(LinearSolver, SparseRightHandSideBlocksSolveLikeDenseOnes) {
 }
 
 TEST(LinearSolver, UnsymmetricSystems) {
-  Problem p(true, false, Storage::Full);
+  ElasticBox p = problem(true, false, Storage::Full);
   // a friction-like unsymmetric coupling: K(i, i+2) += 0.3 k_ii for entries in the pattern
   const SparsePattern& pat = p.matrix.pattern();
-  for (int i = 0; i + 2 < p.numbering->physicalDofCount(); ++i) {
+  for (int i = 0; i + 2 < p.dofs().physicalCount(); ++i) {
     const auto k = pat.find(i, i + 2);
     if (k >= 0) {
       const double v = 0.3 * p.dense(i, i);
@@ -228,7 +184,7 @@ TEST(LinearSolver, UnsymmetricSystems) {
 TEST(LinearSolver, SingularMatrixNamesAFreeDof) {
   // floating body (no constraint), SPD solvers
   {
-    Problem p(false, false, Storage::Upper);
+    ElasticBox p = problem(false, false, Storage::Upper);
     for (SolverMethod m : {SolverMethod::Mumps, SolverMethod::MultFront}) {
       SolverOptions o;
       o.method = m;
@@ -239,12 +195,12 @@ TEST(LinearSolver, SingularMatrixNamesAFreeDof) {
         ADD_FAILURE() << s->backendName() << " accepted a singular matrix";
       } catch (const SingularMatrixError& e) {
         EXPECT_GE(e.equation(), 0) << s->backendName();
-        EXPECT_LT(e.equation(), p.numbering->physicalDofCount()) << s->backendName();
+        EXPECT_LT(e.equation(), p.dofs().physicalCount()) << s->backendName();
       }
     }
   }
   // DX blocked on x = 0 by multipliers but DY free: the rigid translation along Y remains
-  Problem p(true, true, Storage::Upper);
+  ElasticBox p = problem(true, true, Storage::Upper);
   for (SolverMethod m : {SolverMethod::Mumps, SolverMethod::Ldlt}) {
     SolverOptions o;
     o.method = m;
@@ -255,14 +211,11 @@ TEST(LinearSolver, SingularMatrixNamesAFreeDof) {
       ADD_FAILURE() << s->backendName() << " accepted a singular matrix";
     } catch (const SingularMatrixError& e) {
       ASSERT_GE(e.equation(), 0) << s->backendName();
-      EXPECT_EQ(p.numbering->describe(e.equation()).component, Component::DY)
-          << s->backendName() << ": " << p.numbering->describeText(e.equation());
-      const auto [message, note] = p.numbering->explainSingularity(e.equation());
-      EXPECT_NE(message.find("DOF DY of node N"), std::string::npos) << message;
-      EXPECT_NE(note.find("DIS_T"), std::string::npos);
-      if (m == SolverMethod::Mumps) {
-        std::cout << "singular model message: " << message << "\n  note: " << note << "\n";
-      }
+      ASSERT_LT(e.equation(), p.dofs().physicalCount()) << s->backendName();
+      const std::string dof = p.dofs().describe(e.equation(), *p.mesh);
+      EXPECT_EQ(p.dofs().component(e.equation()), 1) << s->backendName() << ": " << dof;
+      EXPECT_NE(dof.find("component DY"), std::string::npos) << dof;
+      EXPECT_NE(dof.find("node N"), std::string::npos) << dof;
     }
   }
 }
@@ -271,7 +224,7 @@ TEST(LinearSolver, SingularMatrixNamesAFreeDof) {
 // near-null pivot as a singular matrix; a negative NPREC turns the detection off (code_aster's
 // convention) and the system is solved.
 TEST(LinearSolver, NegativeNprecTurnsNullPivotDetectionOff) {
-  Problem p(false, false, Storage::Upper);
+  ElasticBox p = problem(false, false, Storage::Upper);
   const double spring = 1e-12 * p.dense.diagonal().maxCoeff();
   for (int i = 0; i < p.matrix.size(); ++i) {
     p.matrix.add(i, i, spring);
@@ -298,16 +251,7 @@ TEST(LinearSolver, NegativeNprecTurnsNullPivotDetectionOff) {
   }
 }
 
-TEST(DofNumbering, DescribesPhysicalAndLagrangeEquations) {
-  const bool active[] = {true, false, true};
-  DofNumbering n(3, 3, active);
-  EXPECT_EQ(n.physicalDofCount(), 6);
-  EXPECT_EQ(n.dof(2, 1), 4);
-  EXPECT_EQ(n.dof(1, 0), -1);
-  const int l = n.addLagrange(Component::LAGS_C, 2);
-  EXPECT_EQ(l, 6);
-  EXPECT_EQ(n.describeText(4), "N3 DY");
-  EXPECT_EQ(n.describeText(l), "N3 LAGS_C");
+TEST(LinearSolver, PetscRefusesUnsymmetricSystems) {
   SolverOptions petsc;
   petsc.method = SolverMethod::Petsc;
   EXPECT_THROW(makeLinearSolver(petsc, MatrixKind::Unsymmetric), LinearSolverError);

@@ -4,9 +4,6 @@
 // Cuthill-McKee ordering of RENUM='RCMK'; the BLAS thread count (STELLA_BLAS_THREADS, P ncpus).
 
 #include "solver/linalg/Ordering.hpp"
-#include "solver/behaviour/Elasticity.hpp"
-#include "solver/fem/BoxMesh.hpp"
-#include "solver/fem/ElementMatrices.hpp"
 #include "solver/linalg/BlasThreads.hpp"
 #include "solver/linalg/LinearSolver.hpp"
 #include "solver/linalg/tests/CubeSystem.hpp"
@@ -20,6 +17,9 @@
 
 namespace stella::linalg {
 namespace {
+
+using stella::testing::BoxClamp;
+using stella::testing::ElasticBox;
 
 struct Case {
   SolverMethod method;
@@ -91,20 +91,19 @@ TEST(Renumbering, UnknownOrderingsAreRefused) {
 // Cuthill-McKee, after any shuffle, numbers it across: a level holds at most 4 nodes (2 DOFs
 // each), an entry spans two levels, so the bandwidth is below 2 x 4 x 2 = 16.
 TEST(Renumbering, ReverseCuthillMcKeeNumbersAStripAcross) {
-  const fem::PlainMesh mesh = fem::boxMesh(CellType::QUAD4, {40, 3, 1}, {40.0, 3.0, 1.0});
+  fem::PlainMesh mesh = fem::boxMesh(CellType::QUAD4, {40, 3, 1}, {40.0, 3.0, 1.0});
   std::vector<int> shuffle(static_cast<std::size_t>(mesh.nodeCount()));
   std::iota(shuffle.begin(), shuffle.end(), 0);
   std::shuffle(shuffle.begin(), shuffle.end(), std::mt19937(7));
-  std::vector<int> connectivity = mesh.connectivity;
-  for (int& node : connectivity) {
+  fem::PlainMesh shuffled = mesh; // node i becomes node shuffle[i]
+  for (int i = 0; i < mesh.nodeCount(); ++i) {
+    shuffled.coordinates.row(shuffle[static_cast<std::size_t>(i)]) = mesh.coordinates.row(i);
+  }
+  for (int& node : shuffled.connectivity) {
     node = shuffle[static_cast<std::size_t>(node)];
   }
-  std::vector<std::int64_t> offsets;
-  for (int c = 0; c <= mesh.cellCount(); ++c) {
-    offsets.push_back(4LL * c);
-  }
-  const DofNumbering numbering(mesh.nodeCount(), 2);
-  const auto pattern = buildPattern(numbering, CellList{connectivity, offsets}, {}, Storage::Upper);
+  const ElasticBox strip(shuffled, BoxClamp{});
+  const SparsePattern* pattern = &strip.matrix.pattern();
   std::vector<int> natural(static_cast<std::size_t>(pattern->size));
   std::iota(natural.begin(), natural.end(), 0);
   const std::vector<int> order = reverseCuthillMcKee(*pattern);

@@ -4,10 +4,8 @@
 // converge in fewer iterations; a kept LDLT_SP preconditioner that no longer serves is rebuilt
 // (REAC_PRECOND); unsymmetric systems with GMRES; what is not available is refused.
 
-#include "solver/behaviour/Elasticity.hpp"
-#include "solver/fem/BoxMesh.hpp"
-#include "solver/fem/ElementMatrices.hpp"
 #include "solver/linalg/LinearSolver.hpp"
+#include "solver/linalg/tests/ElasticBox.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,54 +14,20 @@
 namespace stella::linalg {
 namespace {
 
-// 3D elasticity of an n x n x 2n HEXA8 cube, clamped on z = 0 by elimination (unit diagonal),
-// as stella's SaddleSolver gives it to the solvers (upper triangle, or in full).
+// 3D elasticity of an n x n x 2n HEXA8 cube (E = 1000, nu = 0.3), numbered and assembled by
+// the run's DofMap and StiffnessMatrix, clamped on z = 0 by elimination (unit diagonal), as
+// stella's SaddleSolver gives it to the solvers (upper triangle, or in full).
 struct Cube {
-  fem::PlainMesh mesh;
-  std::unique_ptr<DofNumbering> numbering;
-  SparseMatrix matrix;
+  stella::testing::ElasticBox box;
+  SparseMatrix& matrix;
   std::vector<double> coordinates; // per equation: its node's coordinate along its component
 
   explicit Cube(int n, Storage storage = Storage::Upper)
-      : mesh(fem::boxMesh(CellType::HEXA8, {n, n, 2 * n}, {1.0, 1.0, 2.0})) {
-    numbering = std::make_unique<DofNumbering>(mesh.nodeCount(), 3);
-    std::vector<std::int64_t> offsets;
-    for (int c = 0; c <= mesh.cellCount(); ++c) {
-      offsets.push_back(static_cast<std::int64_t>(c) * mesh.nodesPerCell());
-    }
-    const CellList cells{mesh.connectivity, offsets};
-    auto pattern = buildPattern(*numbering, cells, {}, storage);
-    matrix = SparseMatrix(pattern);
-    const ElementScatter scatter(*pattern, *numbering, cells);
-    const Eigen::MatrixXd d = behaviour::elasticMatrix(fem::Modelling::ThreeD, {1000.0, 0.3});
-    fem::ElementKinematics kin;
-    Eigen::MatrixXd ke;
-    for (int e = 0; e < mesh.cellCount(); ++e) {
-      Eigen::MatrixXd x(mesh.nodesPerCell(), 3);
-      for (int a = 0; a < mesh.nodesPerCell(); ++a) {
-        x.row(a) = mesh.coordinates.row(mesh.cell(e)[a]);
-      }
-      fem::computeKinematics(mesh.cellType, fem::Modelling::ThreeD, x, kin);
-      fem::stiffness(kin, d, ke);
-      scatter.add(e, ke, matrix.values());
-    }
-    // clamp z = 0: rows and columns of its DOFs zeroed, unit diagonal
-    std::vector<bool> clamped(static_cast<std::size_t>(numbering->dofCount()), false);
-    for (int a = 0; a < mesh.nodeCount(); ++a) {
-      for (int c = 0; c < 3; ++c) {
-        coordinates.push_back(mesh.coordinates(a, c));
-        clamped[static_cast<std::size_t>(numbering->dof(a, c))] = std::abs(mesh.coordinates(a, 2)) < 1e-12;
-      }
-    }
-    const SparsePattern& p = matrix.pattern();
-    for (int i = 0; i < p.size; ++i) {
-      for (std::int64_t e = p.rowStart[static_cast<std::size_t>(i)];
-           e < p.rowStart[static_cast<std::size_t>(i) + 1]; ++e) {
-        const int j = p.columns[static_cast<std::size_t>(e)];
-        if (clamped[static_cast<std::size_t>(i)] || clamped[static_cast<std::size_t>(j)]) {
-          matrix.values()[static_cast<std::size_t>(e)] = i == j ? 1.0 : 0.0;
-        }
-      }
+      : box(fem::boxMesh(CellType::HEXA8, {n, n, 2 * n}, {1.0, 1.0, 2.0}),
+            stella::testing::BoxClamp{stella::testing::Clamp::Eliminated, 2, 3, 1000.0, 0.3, storage}),
+        matrix(box.matrix) {
+    for (int i = 0; i < box.dofs().physicalCount(); ++i) {
+      coordinates.push_back(box.coordinate(i));
     }
   }
 

@@ -5,6 +5,7 @@
 
 #include "solver/nonlinear/ElasticSolve.hpp"
 #include "interpreter/Diagnostics.hpp"
+#include "solver/assembly/tests/ElasticStudy.hpp"
 #include "solver/fem/BoxMesh.hpp"
 #include "solver/model/ModelBuilder.hpp"
 
@@ -15,54 +16,26 @@
 namespace stella {
 namespace {
 
-std::shared_ptr<Mesh> toMesh(const fem::PlainMesh& p, bool distort) {
-  auto mesh = std::make_shared<Mesh>();
-  mesh->setDimension(p.dimension);
-  for (int n = 0; n < p.nodeCount(); ++n) {
-    Point3 x{0, 0, 0};
-    for (int d = 0; d < p.dimension; ++d) {
-      x[static_cast<std::size_t>(d)] = p.coordinates(n, d);
-    }
+std::shared_ptr<Mesh> toMesh(fem::PlainMesh p, bool distort) {
+  for (int n = 0; distort && n < p.nodeCount(); ++n) {
+    auto x = p.coordinates.row(n);
     bool interior = true;
     for (int d = 0; d < p.dimension; ++d) {
-      interior =
-          interior && x[static_cast<std::size_t>(d)] > 1e-9 && x[static_cast<std::size_t>(d)] < 1.0 - 1e-9;
+      interior = interior && x(d) > 1e-9 && x(d) < 1.0 - 1e-9;
     }
-    if (distort && interior) { // a smooth perturbation keeps cells valid
-      const double dx = 0.03 * std::sin(7.0 * x[0] + 3.0 * x[1]);
-      const double dy = 0.03 * std::cos(5.0 * x[0] - 4.0 * x[1] + x[2]);
-      x[0] += dx;
-      x[1] += dy;
+    if (interior) { // a smooth perturbation keeps cells valid
+      const double z = p.dimension == 3 ? x(2) : 0.0;
+      const double dx = 0.03 * std::sin(7.0 * x(0) + 3.0 * x(1));
+      const double dy = 0.03 * std::cos(5.0 * x(0) - 4.0 * x(1) + z);
+      x(0) += dx;
+      x(1) += dy;
     }
-    mesh->addNode(x);
   }
-  for (int c = 0; c < p.cellCount(); ++c) {
-    mesh->addCell(p.cellType, std::span<const NodeId>(p.cell(c), static_cast<std::size_t>(p.nodesPerCell())));
-  }
-  return mesh;
+  return fem::toMesh(p);
 }
 
-std::shared_ptr<MaterialField> materialOn(std::shared_ptr<const Mesh> mesh, double e, double nu) {
-  auto m = std::make_shared<Material>();
-  m->name = "STEEL";
-  m->elastic = ElasticMaterial{e, nu, {}, {}};
-  auto f = std::make_shared<MaterialField>();
-  f->mesh = mesh;
-  f->materials.push_back(m);
-  f->cellMaterial.assign(static_cast<std::size_t>(mesh->cellCount()), 0);
-  return f;
-}
-
-std::shared_ptr<Model> modelOn(std::shared_ptr<const Mesh> mesh, const std::string& modelisation) {
-  auto model = std::make_shared<Model>(mesh);
-  std::vector<CellId> all;
-  for (CellId c = 0; c < mesh->cellCount(); ++c) {
-    all.push_back(c);
-  }
-  assignModelling(*model, all, modelisation, {});
-  finishModel(*model, {});
-  return model;
-}
+using testing::elasticMaterialOn;
+using testing::modelOn;
 
 bool onBoundary(const Point3& x, int dim) {
   for (int d = 0; d < dim; ++d) {
@@ -106,7 +79,7 @@ TEST_P(PatchTest, ImposedLinearDisplacementGivesExactConstantStress) {
   }
   const double e = 2.0e5;
   const double nu = 0.3;
-  MechanicalSystem system(model, materialOn(mesh, e, nu), {Excitation{load, nullptr, nullptr}},
+  MechanicalSystem system(model, elasticMaterialOn(mesh, e, nu), {Excitation{load, nullptr, nullptr}},
                           std::vector<std::string>(model->cells.size(), "ELAS"), {});
   ElasticSolve solver(system);
   const StaticSolution s = solver.solve(0.0, true);
@@ -200,7 +173,7 @@ TEST(ElasticSolve, BarInTensionByPressureMatchesClosedFormAndReactions) {
   }
   const double e = 1000.0;
   const double nu = 0.25;
-  MechanicalSystem system(b.model, materialOn(b.mesh, e, nu), {Excitation{load, nullptr, nullptr}},
+  MechanicalSystem system(b.model, elasticMaterialOn(b.mesh, e, nu), {Excitation{load, nullptr, nullptr}},
                           std::vector<std::string>(b.model->cells.size(), "ELAS"), {});
   ElasticSolve solver(system);
   const StaticSolution s = solver.solve(0.0, true);
@@ -231,7 +204,7 @@ TEST(ElasticSolve, EliminatedConditionsGiveTheSameDisplacement) {
   auto load = std::make_shared<MechanicalLoad>();
   load->model = b.model;
   load->nodalForces.push_back({b.corner, 0, 1.0});
-  MechanicalSystem system(b.model, materialOn(b.mesh, 1000.0, 0.25),
+  MechanicalSystem system(b.model, elasticMaterialOn(b.mesh, 1000.0, 0.25),
                           {Excitation{nullptr, kin, nullptr}, Excitation{load, nullptr, nullptr}},
                           std::vector<std::string>(b.model->cells.size(), "ELAS"), {});
   ElasticSolve solver(system);
@@ -246,7 +219,7 @@ TEST(ElasticSolve, EliminatedConditionsGiveTheSameDisplacement) {
   for (const auto& d : kin->imposed) {
     dual->relations.push_back({{{d.node, d.component, 1.0}}, d.value, "DDL_IMPO"});
   }
-  MechanicalSystem system2(b.model, materialOn(b.mesh, 1000.0, 0.25),
+  MechanicalSystem system2(b.model, elasticMaterialOn(b.mesh, 1000.0, 0.25),
                            {Excitation{dual, nullptr, nullptr}, Excitation{load, nullptr, nullptr}},
                            std::vector<std::string>(b.model->cells.size(), "ELAS"), {});
   ElasticSolve solver2(system2);
@@ -262,7 +235,8 @@ TEST(ElasticSolve, SingularModelNamesTheFreeDof) {
   for (NodeId n : b.left) { // DX blocked, DY free: a vertical rigid translation remains
     load->relations.push_back({{{n, 0, 1.0}}, 0.0, "DDL_IMPO"});
   }
-  MechanicalSystem system(b.model, materialOn(b.mesh, 1000.0, 0.25), {Excitation{load, nullptr, nullptr}},
+  MechanicalSystem system(b.model, elasticMaterialOn(b.mesh, 1000.0, 0.25),
+                          {Excitation{load, nullptr, nullptr}},
                           std::vector<std::string>(b.model->cells.size(), "ELAS"), {});
   ElasticSolve solver(system);
   try {

@@ -3,6 +3,7 @@
 // pulled on X1 by a traction 100 t (t = 0, 0.5, 1, 1.5, 2): uniaxial stress SIXX = 100 t, so
 // DX = 5e-4 t x and DY = -NU 5e-4 t y = -1.5e-4 t y (closed form, exact for HEXA8).
 
+#include "solver/database/ConceptStore.hpp"
 #include "solver/nonlinear/tests/StudyRun.hpp"
 #include "solver/post/Table.hpp"
 
@@ -45,9 +46,7 @@ FIN()
 }
 
 std::shared_ptr<Table> table(const StudyRun& run, const std::string& name) {
-  const auto& c = run.session->concepts();
-  auto it = c.find(name);
-  return it == c.end() ? nullptr : conceptData<Table>(it->second);
+  return run.session->concepts().findData<Table>(name);
 }
 
 // Rows of a table whose text column `column` is `text`.

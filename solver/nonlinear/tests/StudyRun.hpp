@@ -4,8 +4,8 @@
 
 #include "catalog/Catalog.hpp"
 #include "interpreter/Interpreter.hpp"
+#include "solver/database/ConceptStore.hpp"
 #include "solver/database/Result.hpp"
-#include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 
 #include <filesystem>
@@ -22,9 +22,7 @@ struct StudyRun {
   RunStatus status = RunStatus::Failed;
 
   std::shared_ptr<Result> result(const std::string& name) const {
-    const auto& c = session->concepts();
-    auto it = c.find(name);
-    return it == c.end() ? nullptr : conceptData<Result>(it->second);
+    return session->concepts().findData<Result>(name);
   }
   std::string mess() const { return message.str(); }
   FailureKind failure() const { return session->counts().failure; }

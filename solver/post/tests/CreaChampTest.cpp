@@ -4,6 +4,7 @@
 // DX = e x, DY = -NU e y, DZ = -NU e z, SIXX = E e, the other stresses 0, with e = 1e-3 RAMP(t)
 // (RAMP(1) = 1, RAMP(2) = 3). Node N8 is (1, 1, 1); cell M83 is a HEXA8 with node N5.
 
+#include "solver/database/ConceptStore.hpp"
 #include "solver/nonlinear/tests/StudyRun.hpp"
 #include "solver/post/FieldConcept.hpp"
 #include "solver/post/tests/PulledCube.hpp"
@@ -67,9 +68,10 @@ FIN()
   EXPECT_EQ(run->session->counts().testsOk, 20) << run->resu.str();
   EXPECT_EQ(run->session->counts().testsNook, 0) << run->resu.str();
   const auto& concepts = run->session->concepts();
-  EXPECT_EQ(concepts.at("U1")->type, "cham_no");
-  EXPECT_EQ(concepts.at("SG")->type, "cham_elem");
-  auto se = conceptData<FieldConcept>(concepts.at("SE"));
+  ASSERT_TRUE(concepts.find("U1") && concepts.find("SG"));
+  EXPECT_EQ(concepts.find("U1")->type, "cham_no");
+  EXPECT_EQ(concepts.find("SG")->type, "cham_elem");
+  auto se = concepts.findData<FieldConcept>("SE");
   ASSERT_TRUE(se);
   EXPECT_EQ(se->fieldType, "ELNO_SIEF_R");
   // The layout of reference §4.3: the header names the field concept, the cell and the point.

@@ -9,6 +9,7 @@
 
 #include "solver/post/DerivedFields.hpp"
 
+#include "solver/assembly/tests/ElasticStudy.hpp"
 #include "solver/fem/BoxMesh.hpp"
 #include "solver/fem/ShapeTable.hpp"
 #include "solver/model/ModelBuilder.hpp"
@@ -21,37 +22,20 @@
 namespace stella {
 namespace {
 
-std::shared_ptr<Mesh> toMesh(const fem::PlainMesh& p, bool distort) {
-  auto mesh = std::make_shared<Mesh>();
-  mesh->setDimension(p.dimension);
+std::shared_ptr<Mesh> toMesh(fem::PlainMesh p, bool distort) {
   for (int n = 0; n < p.nodeCount(); ++n) {
-    Point3 x{0, 0, 0};
-    for (int d = 0; d < p.dimension; ++d) {
-      x[static_cast<std::size_t>(d)] = p.coordinates(n, d);
-    }
+    auto x = p.coordinates.row(n);
     if (distort) { // smooth, small, keeps cells valid; r stays > 0 for AXIS (x >= 1)
-      x[0] += 0.03 * std::sin(7.0 * x[0] + 3.0 * x[1]);
-      x[1] += 0.03 * std::cos(5.0 * x[0] - 4.0 * x[1] + x[2]);
+      const double z = p.dimension == 3 ? x(2) : 0.0;
+      x(0) += 0.03 * std::sin(7.0 * x(0) + 3.0 * x(1));
+      x(1) += 0.03 * std::cos(5.0 * x(0) - 4.0 * x(1) + z);
     }
-    x[0] += 1.0; // AXIS needs r > 0
-    mesh->addNode(x);
+    x(0) += 1.0; // AXIS needs r > 0
   }
-  for (int c = 0; c < p.cellCount(); ++c) {
-    mesh->addCell(p.cellType, std::span<const NodeId>(p.cell(c), static_cast<std::size_t>(p.nodesPerCell())));
-  }
-  return mesh;
+  return fem::toMesh(p);
 }
 
-std::shared_ptr<Model> modelOn(std::shared_ptr<const Mesh> mesh, const std::string& modelisation) {
-  auto model = std::make_shared<Model>(mesh);
-  std::vector<CellId> all;
-  for (CellId c = 0; c < mesh->cellCount(); ++c) {
-    all.push_back(c);
-  }
-  assignModelling(*model, all, modelisation, {});
-  finishModel(*model, {});
-  return model;
-}
+using testing::modelOn;
 
 struct Case {
   CellType type;

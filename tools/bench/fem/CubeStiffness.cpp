@@ -5,7 +5,7 @@
 #include "solver/behaviour/Elasticity.hpp"
 #include "solver/fem/BoxMesh.hpp"
 #include "solver/fem/ElementMatrices.hpp"
-#include "solver/linalg/DofNumbering.hpp"
+#include "tools/bench/fem/PlainAssembly.hpp"
 
 namespace stella::bench {
 
@@ -16,10 +16,10 @@ CubeSystem hexa8Cube(int n) {
   for (int c = 0; c <= mesh.cellCount(); ++c) {
     offsets.push_back(static_cast<std::int64_t>(c) * mesh.nodesPerCell());
   }
-  linalg::DofNumbering numbering(mesh.nodeCount(), 3);
-  const linalg::CellList cells{mesh.connectivity, offsets};
-  const auto pattern = linalg::buildPattern(numbering, cells, {}, linalg::Storage::Upper);
-  const linalg::ElementScatter scatter(*pattern, numbering, cells);
+  const PlainNumbering numbering{mesh.nodeCount(), 3};
+  const CellList cells{mesh.connectivity, offsets};
+  const auto pattern = buildPattern(numbering, cells, {}, linalg::Storage::Upper);
+  const ElementScatter scatter(*pattern, numbering, cells);
   CubeSystem s{linalg::SparseMatrix(pattern), Eigen::VectorXd::Zero(numbering.dofCount())};
   const Eigen::MatrixXd d = behaviour::elasticMatrix(model, {210000.0, 0.3});
   fem::ElementKinematics kin;

@@ -9,6 +9,8 @@
 //     SOLVER    MUMPS | MULT_FRONT | GCPC
 //     lagrange  dualise the clamped face's DOFs (symmetric indefinite) instead of eliminating them
 // Output: one line "key=value ..." per run.
+// Numbering, pattern and scatter are the benchmark's own plain-array assembly (PlainAssembly.hpp);
+// the run's path (DofMap, StiffnessMatrix, SaddleSolver) is timed by stella-bench-system.
 
 #include "solver/behaviour/Elasticity.hpp"
 #include "solver/fem/BoxMesh.hpp"
@@ -16,6 +18,7 @@
 #include "solver/linalg/LinearSolver.hpp"
 #include "solver/loads/SkinLoads.hpp"
 #include "solver/nonlinear/PhaseTimes.hpp"
+#include "tools/bench/fem/PlainAssembly.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -73,16 +76,14 @@ int main(int argc, char** argv) {
   t["mesh"] = clock.lap();
 
   // numbering: clamped face x = 0 (all components), by Lagrange multipliers or elimination
-  linalg::DofNumbering numbering(mesh.nodeCount(), dim);
+  bench::PlainNumbering numbering{mesh.nodeCount(), dim};
   std::vector<std::pair<int, int>> couplings;
   std::vector<int> blocked;
   for (int a = 0; a < mesh.nodeCount(); ++a) {
     if (mesh.coordinates(a, 0) < 1e-12) {
       for (int c = 0; c < dim; ++c) {
         if (lagrange) {
-          couplings.emplace_back(
-              numbering.addLagrange(linalg::Component::LAGR, a, static_cast<linalg::Component>(c)),
-              numbering.dof(a, c));
+          couplings.emplace_back(numbering.addMultiplier(), numbering.dof(a, c));
         } else {
           blocked.push_back(numbering.dof(a, c));
         }
@@ -94,9 +95,9 @@ int main(int argc, char** argv) {
 
   const linalg::MatrixKind kind =
       lagrange ? linalg::MatrixKind::SymmetricIndefinite : linalg::MatrixKind::SymmetricPositiveDefinite;
-  const linalg::CellList cells{mesh.connectivity, offsets};
-  const auto pattern = linalg::buildPattern(numbering, cells, couplings, linalg::storageFor(kind));
-  const linalg::ElementScatter scatter(*pattern, numbering, cells);
+  const bench::CellList cells{mesh.connectivity, offsets};
+  const auto pattern = bench::buildPattern(numbering, cells, couplings, linalg::storageFor(kind));
+  const bench::ElementScatter scatter(*pattern, numbering, cells);
   linalg::SparseMatrix k(pattern);
   t["pattern"] = clock.lap();
   mem["pattern"] = peakResidentMegabytes();

@@ -41,22 +41,6 @@ struct Clock {
   }
 };
 
-std::shared_ptr<Mesh> toMesh(const fem::PlainMesh& p) {
-  auto mesh = std::make_shared<Mesh>();
-  mesh->setDimension(p.dimension);
-  for (int n = 0; n < p.nodeCount(); ++n) {
-    Point3 x{0, 0, 0};
-    for (int d = 0; d < p.dimension; ++d) {
-      x[static_cast<std::size_t>(d)] = p.coordinates(n, d);
-    }
-    mesh->addNode(x);
-  }
-  for (int c = 0; c < p.cellCount(); ++c) {
-    mesh->addCell(p.cellType, std::span<const NodeId>(p.cell(c), static_cast<std::size_t>(p.nodesPerCell())));
-  }
-  return mesh;
-}
-
 std::shared_ptr<MaterialField> steel(std::shared_ptr<const Mesh> mesh) {
   auto m = std::make_shared<Material>();
   m->name = "STEEL";
@@ -93,7 +77,7 @@ int main(int argc, char** argv) {
                                             : CellType::QUAD4;
   const bool threeD = dimension(type) == 3;
   Clock clock;
-  auto mesh = toMesh(fem::boxMesh(type, {n, n, threeD ? n : 1}, {1.0, 1.0, 1.0}));
+  auto mesh = fem::toMesh(fem::boxMesh(type, {n, n, threeD ? n : 1}, {1.0, 1.0, 1.0}));
   auto model = std::make_shared<Model>(mesh);
   std::vector<CellId> all(static_cast<std::size_t>(mesh->cellCount()));
   for (CellId c = 0; c < mesh->cellCount(); ++c) {
