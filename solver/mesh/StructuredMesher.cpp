@@ -5,6 +5,7 @@
 #include "solver/mesh/StructuredMesher.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/mesh/CellTopology.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 
@@ -161,7 +162,7 @@ private:
 };
 
 [[noreturn]] void refuse(const std::string& what) {
-  throw UserError(Diagnostic::fatal("MESHGEN_1", "structured mesh: " + what));
+  throw UserError(msg::make("MESHGEN_1", {{"what", what}}));
 }
 
 } // namespace
