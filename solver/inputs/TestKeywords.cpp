@@ -1,14 +1,14 @@
 #include "solver/inputs/TestKeywords.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 
 namespace stella {
 
 namespace {
 
 void refuse(const KeywordTree& kw, const std::string& name, const std::string& why) {
-  throw UserError(
-      Diagnostic::fatal("TEST_1", name + ": " + why + " is not implemented yet", kw.locationOf(name)));
+  throw UserError(msg::make("TEST_1", {{"name", name}, {"why", why}}, kw.locationOf(name)));
 }
 
 // The single real of VALE_CALC / VALE_CALC_I (or VALE_REFE / VALE_REFE_I).
