@@ -3,6 +3,7 @@
 #include "Confine.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 
 #include <algorithm>
 
@@ -29,10 +30,7 @@ fs::path folderOf(const fs::path& file) {
 [[noreturn]] void refuse(const std::string& what, const std::string& written, const fs::path& folder,
                          const SourceLocation& at) {
   throw UserError(
-      Diagnostic::fatal("CONFINE_1",
-                        what + " '" + written + "' resolves outside " + folder.string() + " (--confine)", at)
-          .withNote("with --confine every data and result file must lie in the study's folder: "
-                    "no '..' out of it, no absolute path elsewhere, no symbolic link leading out"));
+      msg::make("CONFINE_1", {{"what", what}, {"written", written}, {"folder", folder.string()}}, at));
 }
 
 } // namespace
