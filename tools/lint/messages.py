@@ -143,7 +143,7 @@ NOTE = re.compile(r"\.withNote\(")
 # files whose fail() helpers throw something else than a diagnostic (stella sweep's SweepError)
 NOT_DIAGNOSTICS = ("tools/sweep/",)
 # helpers that build a diagnostic or a language error from a catalogue key
-NAMED_HELPER = re.compile(r"\b(fail|failAt|failContent|report|raise|langError|throwFileError|error|notImplementedYet)\(")
+NAMED_HELPER = re.compile(r"\b(fail|failAt|failContent|report|raise|langError|throwFileError|error|notImplementedYet|notImplemented|refuse|refused)\(")
 HELPER = re.compile(r"\b\w+\(\s*\"[A-Z][A-Z0-9]*(?:_[A-Z0-9]+)*_[0-9A-Z]+\"\s*,")
 for rel, text in sources():
     if rel.startswith("interpreter/Diagnostics") or rel.startswith("messages/"):
