@@ -73,7 +73,7 @@ void readLineSearch(const KeywordTree& kw, NewtonSettings& s) {
   const KeywordTree& ls = kw.occurrences("RECH_LINEAIRE").front();
   // METHODE: the catalogue implements 'CORDE' only (implemente=).
   if (kw.has("CONTACT")) {
-    notImplemented(kw, "RECH_LINEAIRE", "RECH_LINEAIRE with CONTACT");
+    notImplemented(kw, "RECH_LINEAIRE", msg::text("SNL_1.f1"));
   }
   s.lineSearch.enabled = true;
   s.lineSearch.maxIterations = static_cast<int>(ls.integer("ITER_LINE_MAXI"));

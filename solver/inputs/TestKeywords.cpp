@@ -17,7 +17,7 @@ std::optional<double> singleValue(const KeywordTree& kw, const std::string& real
   for (const std::string& name : {realName, intName}) {
     if (const SimpleKeyword* k = kw.simple(name)) {
       if (k->values.size() != 1) {
-        refuse(kw, name, "testing several values at once");
+        refuse(kw, name, msg::text("TEST_1.f1"));
       }
       return k->values.front().asReal();
     }
@@ -30,7 +30,7 @@ std::optional<double> singleValue(const KeywordTree& kw, const std::string& real
 ValueTest valueTestFromKeywords(const KeywordTree& kw, double computed, const std::string& legend) {
   for (const std::string name : {"VALE_CALC_C", "VALE_REFE_C", "VALE_CALC_K", "VALE_REFE_K"}) {
     if (kw.has(name)) {
-      refuse(kw, name, name.back() == 'C' ? "testing complex values" : "testing texts");
+      refuse(kw, name, name.back() == 'C' ? msg::text("TEST_1.f2") : msg::text("TEST_1.f3"));
     }
   }
   ValueTest t;

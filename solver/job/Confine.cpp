@@ -39,19 +39,19 @@ void confineExport(const Export& study, const fs::path& outputDirectory) {
   const fs::path folder = folderOf(study.file);
   std::shared_ptr<const SourceFile> source = SourceFile::load(study.file.string());
   if (!outputDirectory.empty() && !inside(fs::absolute(outputDirectory), folder)) {
-    refuse("the output directory", outputDirectory.string(), folder, {});
+    refuse(msg::text("CONFINE_1.f1"), outputDirectory.string(), folder, {});
   }
   const fs::path outputBase = outputDirectory.empty() ? folder : fs::absolute(outputDirectory);
   for (const ExportEntry& e : study.entries) {
     SourceLocation at{source, e.line, 1, static_cast<int>(source->line(e.line).size())};
     if (e.data && !inside(e.path, folder)) {
-      refuse("the data file", e.pathAsWritten, folder, at);
+      refuse(msg::text("CONFINE_1.f2"), e.pathAsWritten, folder, at);
     }
     if (e.result) {
       const fs::path written(e.pathAsWritten);
       const fs::path destination = written.is_absolute() ? written : outputBase / written;
       if (!inside(destination, folder)) {
-        refuse("the result file", e.pathAsWritten, folder, at);
+        refuse(msg::text("CONFINE_1.f3"), e.pathAsWritten, folder, at);
       }
     }
   }
@@ -61,11 +61,11 @@ void confineCommandFile(const fs::path& commandFile, const std::map<int, fs::pat
                         const fs::path& outputDirectory) {
   const fs::path folder = folderOf(commandFile);
   if (!outputDirectory.empty() && !inside(fs::absolute(outputDirectory), folder)) {
-    refuse("the output directory", outputDirectory.string(), folder, {});
+    refuse(msg::text("CONFINE_1.f1"), outputDirectory.string(), folder, {});
   }
   for (const auto& [unit, path] : units) {
     if (!inside(fs::absolute(path), folder)) {
-      refuse("the file of --unit " + std::to_string(unit), path.string(), folder, {});
+      refuse(msg::text("CONFINE_1.f4", {{"unit", std::to_string(unit)}}), path.string(), folder, {});
     }
   }
 }

@@ -172,12 +172,12 @@ Mesh buildStructuredMesh(const StructuredSpec& spec) {
   const CellShape shape = shapeOf(t);
   const int dim = dimension(t);
   if (dim < 2 || shape == CellShape::Pyramid || t == CellType::TRIA7) {
-    refuse(std::string("cell type ") + std::string(name(t)) + " is not implemented yet");
+    refuse(msg::text("MESHGEN_1.f1", {{"name", std::string(name(t))}}));
   }
   for (int d = 0; d < dim; ++d) {
     const auto k = static_cast<std::size_t>(d);
     if (spec.divisions[k] < 1 || spec.divisions[k] > 100000 || !(spec.lengths[k] > 0.0)) {
-      refuse("divisions must be >= 1 and lengths > 0");
+      refuse(msg::text("MESHGEN_1.f2"));
     }
   }
   Builder b(spec);

@@ -28,13 +28,12 @@ void refuseUnsupported(const KeywordTree& kw) {
   // INTERPOL='LIN' are refused by the catalogue (implemente=, non_implemente=).
   for (const char* k : {"MAILLAGE", "TABLE", "CARA_ELEM", "CHARGE", "CHAM_MATER"}) {
     if (kw.has(k) && !kw.has("RESULTAT")) {
-      notImplemented(kw, k, fmt::format("OPERATION='EXTR' from {}", k),
-                     "extract a field of a result with RESULTAT=..., NOM_CHAM=...");
+      notImplemented(kw, k, msg::text("CREA_1.f1", {{"k", k}}), msg::text("CREA_1.f3"));
     }
   }
   if (kw.text("TYPE_CHAM").rfind("CART_", 0) == 0) {
-    notImplemented(kw, "TYPE_CHAM", fmt::format("TYPE_CHAM='{}' (a carte)", kw.text("TYPE_CHAM")),
-                   "extract the field as a cham_elem (ELEM_, ELGA_ or ELNO_ types)");
+    notImplemented(kw, "TYPE_CHAM", msg::text("CREA_1.f2", {{"text", kw.text("TYPE_CHAM")}}),
+                   msg::text("CREA_1.f4"));
   }
 }
 

@@ -202,7 +202,7 @@ void writeAsterFormat(OperatorCall& call, const std::filesystem::path& path) {
   }
   const auto& occurrences = kw.occurrences("RESU");
   if (occurrences.size() > 1) {
-    refuse(occurrences[1], "MAILLAGE", "several RESU occurrences (several meshes in one .mail file)");
+    refuse(occurrences[1], "MAILLAGE", msg::text("IMPR_RESU_1.f1"));
   }
   for (const auto& occ : occurrences) {
     for (const char* k : {"RESULTAT", "CHAM_GD", "CARA_ELEM"}) {
@@ -211,9 +211,7 @@ void writeAsterFormat(OperatorCall& call, const std::filesystem::path& path) {
       }
     }
     if (const auto* f = occ.simple("FORMAT_R"); f != nullptr && !f->defaulted) {
-      refuse(occ, "FORMAT_R",
-             "FORMAT_R (the format of field values; coordinates are written with 17 "
-             "significant digits)");
+      refuse(occ, "FORMAT_R", msg::text("IMPR_RESU_1.f2"));
     }
     const auto mesh = meshConceptOf(occ);
     const std::string meshName = occ.conceptValue("MAILLAGE")->name;

@@ -139,7 +139,7 @@ void placeOf(const KeywordTree& occ, const Mesh& mesh, FrameSpec& spec) {
 std::vector<FrameSpec> frames(const KeywordTree& kw, const Mesh& mesh) {
   const std::string repere = kw.text("REPERE");
   if (repere != "UTILISATEUR" && repere != "CYLINDRIQUE") {
-    throw refused("REPERE='" + repere + "'", kw.locationOf("REPERE"));
+    throw refused(msg::text("MODI_REPERE_1.f1", {{"repere", repere}}), kw.locationOf("REPERE"));
   }
   const auto& occurrences = kw.occurrences("AFFE");
   if (occurrences.empty()) {
@@ -180,7 +180,7 @@ std::vector<Change> changes(const KeywordTree& kw, bool ofResult, int dim) {
     const std::string type = occ.text("TYPE_CHAM");
     const auto q = frameQuantity(type);
     if (!q) {
-      throw refused("TYPE_CHAM='" + type + "'", occ.locationOf("TYPE_CHAM"));
+      throw refused(msg::text("MODI_REPERE_1.f2", {{"type", type}}), occ.locationOf("TYPE_CHAM"));
     }
     if (dim == 3 && (*q == FrameQuantity::Vector2D || *q == FrameQuantity::Tensor2D)) {
       throw invalid("MODI_REPERE_2.11", {{"type", type}}, occ.locationOf("TYPE_CHAM"));
@@ -275,7 +275,7 @@ public:
       index_.push_back(*i);
     }
     if (frame_.byNodeGroup && f.support() != FieldSupport::Node) {
-      throw refused("AFFE GROUP_NO on a field that is not nodal (" + label_ + ")", frame_.location);
+      throw refused(msg::text("MODI_REPERE_1.f3", {{"label", label_}}), frame_.location);
     }
     switch (f.support()) {
     case FieldSupport::Node:
@@ -322,10 +322,11 @@ private:
         points.assign(static_cast<std::size_t>(count), Point3{0.0, 0.0, 0.0}); // not used
       }
       if (static_cast<int>(points.size()) != count) {
-        throw refused(
-            fmt::format("REPERE='CYLINDRIQUE' of {} on cell {} ({} points of a {}, an unknown family)",
-                        label_, mesh.cellName(c), count, name(mesh.cellType(c))),
-            change_.occ->location());
+        throw refused(msg::text("MODI_REPERE_1.f4", {{"label", label_},
+                                                     {"cell_name", mesh.cellName(c)},
+                                                     {"count", count},
+                                                     {"name", name(mesh.cellType(c))}}),
+                      change_.occ->location());
       }
       const Point3 centre = positions_.cellCentre(c);
       for (int q = 0; q < count; ++q) {
@@ -473,7 +474,7 @@ Value ofField(OperatorCall& call) {
   const auto concept_ = kw.conceptValue("CHAM_GD");
   auto source = conceptData<FieldConcept>(concept_);
   if (source == nullptr || source->field == nullptr || source->mesh == nullptr) {
-    throw refused("CHAM_GD of a concept that is not a field made by CREA_CHAMP", kw.locationOf("CHAM_GD"));
+    throw refused(msg::text("MODI_REPERE_1.f5"), kw.locationOf("CHAM_GD"));
   }
   const auto specs = frames(kw, *source->mesh);
   const auto todo = changes(kw, false, source->mesh->dimension());

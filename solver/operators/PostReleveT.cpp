@@ -46,14 +46,14 @@ void refuseUnsupported(const KeywordTree& a) {
   const auto operations = a.texts("OPERATION");
   for (const auto& op : operations) {
     if (op != "EXTRACTION" && op != "MOYENNE") {
-      refuse(a, fmt::format("OPERATION='{}'", op), "OPERATION");
+      refuse(a, msg::text("RELEVE_1.f1", {{"op", op}}), "OPERATION");
     }
   }
   if (a.text("REPERE") != "GLOBAL") { // in the block of every OPERATION but EXTREMA and MOYENNE_ARITH
-    refuse(a, fmt::format("REPERE='{}'", a.text("REPERE")), "REPERE");
+    refuse(a, msg::text("RELEVE_1.f2", {{"text", a.text("REPERE")}}), "REPERE");
   }
   if (a.has("RESULTANTE") && std::find(operations.begin(), operations.end(), "MOYENNE") != operations.end()) {
-    refuse(a, "RESULTANTE with OPERATION='MOYENNE'", "RESULTANTE");
+    refuse(a, msg::text("RELEVE_1.f3"), "RESULTANTE");
   }
 }
 
