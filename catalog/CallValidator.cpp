@@ -12,7 +12,7 @@ namespace stella::validation {
 
 ValidatedCall CallValidator::run(const CallArguments& args) {
   for (std::size_t i = 0; i < args.positional.size(); ++i) {
-    error("CATALOG_13", command_.name + " takes keyword arguments only",
+    error("CATALOG_13", {{"name", command_.name}},
           i < args.positionalLocations.size() ? args.positionalLocations[i] : args.callLocation);
   }
   ValidatedCall out;
@@ -40,9 +40,9 @@ ValidatedCall CallValidator::run(const CallArguments& args) {
   return out;
 }
 
-void CallValidator::error(const std::string& id, std::string message, const SourceLocation& at,
+void CallValidator::error(std::string_view key, msg::Args args, const SourceLocation& at,
                           std::vector<std::string> notes) {
-  Diagnostic d = Diagnostic::syntax(id, std::move(message), at);
+  Diagnostic d = msg::make(key, args, at);
   for (auto& n : notes) {
     d.withNote(std::move(n));
   }
@@ -57,20 +57,16 @@ void CallValidator::checkReuse(const KeywordArgument* reuse, ValidatedCall& out,
           k != nullptr && !k->values.empty() && k->values.front().isConcept()) {
         target = k->values.front().asConcept()->name;
       }
-      error("CATALOG_11",
-            command_.name + " modifies " + target + " in place: write " + target + " = " + command_.name +
-                "(reuse=" + target + ", ...)",
-            call);
+      error("CATALOG_11", {{"name", command_.name}, {"target", target}}, call);
     }
     return;
   }
   if (command_.reentrant == 'n') {
-    error("CATALOG_11", command_.name + " does not accept reuse=: it always creates a new concept",
-          reuse->location);
+    error("CATALOG_11.2", {{"name", command_.name}}, reuse->location);
     return;
   }
   if (!reuse->value || !reuse->value->isConcept()) {
-    error("CATALOG_11", "reuse= expects a concept, got " + (reuse->value ? reuse->value->repr() : "nothing"),
+    error("CATALOG_11.3", {{"value", (reuse->value ? reuse->value->repr() : "nothing")}},
           reuse->valueLocation);
     return;
   }
@@ -79,9 +75,10 @@ void CallValidator::checkReuse(const KeywordArgument* reuse, ValidatedCall& out,
     const SimpleKeyword* k = out.keywords.simple(command_.reuseKeyword);
     if (k && !k->values.empty() && k->values.front().isConcept() &&
         k->values.front().asConcept() != out.reused) {
-      error("CATALOG_11",
-            "reuse=" + out.reused->name + " must be the concept given to " + command_.reuseKeyword + " (" +
-                k->values.front().asConcept()->name + ")",
+      error("CATALOG_11.4",
+            {{"name", out.reused->name},
+             {"reuse_keyword", command_.reuseKeyword},
+             {"name_2", k->values.front().asConcept()->name}},
             reuse->valueLocation);
     }
   }
@@ -188,7 +185,7 @@ KeywordTree CallValidator::validateLevel(const Level& level, const std::vector<K
   std::map<std::string, const KeywordArgument*> givenArgs;
   for (const KeywordArgument& k : keywords) {
     if (givenArgs.count(k.name)) {
-      error("CATALOG_15", "keyword " + k.name + " is given twice in " + where, k.location);
+      error("CATALOG_15", {{"name", k.name}, {"where", where}}, k.location);
       continue;
     }
     given[k.name] = k.value ? *k.value : Value();
@@ -206,10 +203,7 @@ KeywordTree CallValidator::validateLevel(const Level& level, const std::vector<K
     }
     present.push_back(stored); // rules written with the current spelling see the old one too
     if (givenArgs.count(stored)) {
-      error("CATALOG_15",
-            name + " and " + stored + " are the same keyword (" + name +
-                " is the older spelling); give only one",
-            loc);
+      error("CATALOG_15.2", {{"name", name}, {"stored", stored}}, loc);
     }
   };
   for (const Entry* e : active.order) {
@@ -233,8 +227,7 @@ KeywordTree CallValidator::validateLevel(const Level& level, const std::vector<K
         present.push_back(e->name);
         tree.addSimple(SimpleKeyword{stored, normalised(s, conditionValue(*s.defaultValue)), at, true});
       } else if (s.presence == Presence::Mandatory) {
-        error("CATALOG_5", "missing mandatory keyword " + e->name + " in " + where, at,
-              {e->name + ": " + s.description});
+        error("CATALOG_5", {{"name", e->name}, {"where", where}, {"description", s.description}}, at);
       }
     } else if (e->factor) {
       const FactorSpec& f = *e->factor;
@@ -243,7 +236,8 @@ KeywordTree CallValidator::validateLevel(const Level& level, const std::vector<K
         present.push_back(e->name);
         noteRename(e->name, stored, g->second->location);
         if (f.notImplemented) {
-          notImplementedYet("keyword " + e->name + " of " + where, *f.notImplemented, g->second->location);
+          notImplementedYet("CATALOG_17.keyword", {{"name", e->name}, {"where", where}}, *f.notImplemented,
+                            g->second->location);
           continue;
         }
         // The other definitions of this factor keyword in exclusive blocks of this level, to
@@ -260,8 +254,7 @@ KeywordTree CallValidator::validateLevel(const Level& level, const std::vector<K
         one.push_back(validateLevel(f.body, {}, at, e->name + " of " + where));
         tree.addFactor(FactorKeyword{stored, std::move(one), at, true});
       } else if (f.presence == Presence::Mandatory) {
-        error("CATALOG_5", "missing mandatory factor keyword " + e->name + " in " + where, at,
-              {e->name + ": " + f.description, "write " + e->name + "=_F(...)"});
+        error("CATALOG_5.2", {{"name", e->name}, {"where", where}, {"description", f.description}}, at);
       }
     }
   }

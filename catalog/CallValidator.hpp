@@ -7,6 +7,7 @@
 #include "Validator.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 
 #include <map>
 #include <optional>
@@ -42,7 +43,8 @@ private:
   std::vector<Diagnostic> errors_;
   std::vector<std::vector<std::pair<const FactorSpec*, std::string>>> variants_; // per factor being validated
 
-  void error(const std::string& id, std::string message, const SourceLocation& at,
+  // Records catalogue entry `key` (messages/catalog.msg) with `args`, then the computed `notes`.
+  void error(std::string_view key, msg::Args args, const SourceLocation& at,
              std::vector<std::string> notes = {});
 
   void checkReuse(const KeywordArgument* reuse, ValidatedCall& out, const SourceLocation& call);
@@ -60,8 +62,9 @@ private:
   KeywordTree validateLevel(const Level& level, const std::vector<KeywordArgument>& written,
                             const SourceLocation& at, const std::string& where);
 
-  void notImplementedYet(const std::string& what, const std::string& why, const SourceLocation& at,
-                         std::vector<std::string> notes = {});
+  // Records CATALOG_17 (entry `key`: CATALOG_17.keyword or .value) with `args`, then `why` and `notes`.
+  void notImplementedYet(std::string_view key, msg::Args args, const std::string& why,
+                         const SourceLocation& at, std::vector<std::string> notes = {});
 
   // A keyword the catalogue marks non_implemente= given by the user: refused unless its value is
   // the one accepted (accepte=, the keyword's default).

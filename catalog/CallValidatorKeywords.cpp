@@ -2,6 +2,7 @@
 // and the keywords refused (not implemented, not offered here) with their suggestions (see
 // CallValidator.hpp).
 #include "CallValidator.hpp"
+#include "messages/Messages.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -29,13 +30,13 @@ void collectAll(const Level& level, const std::string& condition,
 
 } // namespace
 
-void CallValidator::notImplementedYet(const std::string& what, const std::string& why,
+void CallValidator::notImplementedYet(std::string_view key, msg::Args args, const std::string& why,
                                       const SourceLocation& at, std::vector<std::string> notes) {
   if (!why.empty()) {
     notes.insert(notes.begin(), why);
   }
-  notes.push_back("`stella catalog " + command_.name + "` shows what stella implements of it");
-  Diagnostic d = Diagnostic::fatal("CATALOG_17", what + " is not implemented yet", at);
+  notes.push_back(msg::text("CATALOG_17.n1", {{"command", command_.name}}));
+  Diagnostic d = msg::make(key, args, at);
   for (auto& n : notes) {
     d.withNote(std::move(n));
   }
@@ -59,7 +60,8 @@ bool CallValidator::refuseNotImplemented(const std::string& name, const SimpleSp
   if (s.acceptedValue) {
     notes.push_back("only " + name + "=" + s.acceptedValue->repr() + " is accepted (or leave it out)");
   }
-  notImplementedYet("keyword " + name + " of " + where, *s.notImplemented, k.location, std::move(notes));
+  notImplementedYet("CATALOG_17.keyword", {{"name", name}, {"where", where}}, *s.notImplemented, k.location,
+                    std::move(notes));
   return true;
 }
 
@@ -80,10 +82,7 @@ void CallValidator::collectVariants(const Level& level, const std::string& name,
 void CallValidator::reportNotAllowed(const Level& level, const ActiveSet& active, const KeywordArgument& k,
                                      const std::string& where, bool quietIfConditional) {
   if (std::find(level.outOfScope.begin(), level.outOfScope.end(), k.name) != level.outOfScope.end()) {
-    error("CATALOG_SCOPE",
-          "keyword " + k.name + " of " + where + " belongs to physics outside stella's scope", k.location,
-          {"stella covers static and dynamic mechanics with contact; this keyword of the reference "
-           "catalogue is not provided"});
+    error("CATALOG_SCOPE", {{"name", k.name}, {"where", where}}, k.location);
     return;
   }
   std::vector<std::pair<std::string, std::string>> all;
@@ -93,9 +92,7 @@ void CallValidator::reportNotAllowed(const Level& level, const ActiveSet& active
       if (quietIfConditional) {
         return;
       }
-      error("CATALOG_14",
-            "keyword " + k.name + " is not allowed here in " + where + ": it requires " + condition,
-            k.location);
+      error("CATALOG_14", {{"name", k.name}, {"where", where}, {"condition", condition}}, k.location);
       return;
     }
   }
@@ -138,7 +135,7 @@ void CallValidator::reportNotAllowed(const Level& level, const ActiveSet& active
     }
   }
   notes.push_back("keywords allowed here: " + joinNames(allowed));
-  error("CATALOG_1", "unknown keyword " + k.name + " in " + where, k.location, std::move(notes));
+  error("CATALOG_1", {{"name", k.name}, {"where", where}}, k.location, std::move(notes));
 }
 
 std::optional<std::vector<KeywordArgument>>
@@ -173,16 +170,18 @@ std::vector<KeywordTree> CallValidator::checkFactor(const std::string& name, con
                              ? std::to_string(f.min)
                              : "between " + std::to_string(f.min) + " and " + std::to_string(f.max);
     error("CATALOG_9",
-          std::string(given.size() < static_cast<std::size_t>(f.min) ? "too few" : "too many") +
-              " occurrences of " + name + ": expected " + bounds + ", got " + std::to_string(given.size()),
+          {{"given_count",
+            std::string(given.size() < static_cast<std::size_t>(f.min) ? "too few" : "too many")},
+           {"name", name},
+           {"bounds", bounds},
+           {"given_count_2", std::to_string(given.size())}},
           k.valueLocation);
   }
   for (std::size_t i = 0; i < given.size(); ++i) {
     SourceLocation at;
     auto keywords = occurrence(given[i], k.valueLocation, at);
     if (!keywords) {
-      error("CATALOG_2", name + " expects _F(...) occurrences, got " + given[i].repr(), k.valueLocation,
-            {"write " + name + "=_F(KEYWORD=value, ...)"});
+      error("CATALOG_2", {{"name", name}, {"repr", given[i].repr()}}, k.valueLocation);
       continue;
     }
     std::string label =
@@ -205,8 +204,11 @@ void CallValidator::checkRules(const ActiveSet& active, const std::vector<std::s
       }
     }
     error("CATALOG_6",
-          "rule " + r->keyword() + "(" + joinNames(r->names) + ") of " + where + " is broken: " +
-              r->explanation() + (found.empty() ? "; none is given" : "; given: " + joinNames(found)),
+          {{"keyword", r->keyword()},
+           {"join_names", joinNames(r->names)},
+           {"where", where},
+           {"explanation", r->explanation()},
+           {"value", (found.empty() ? "; none is given" : "; given: " + joinNames(found))}},
           at);
   }
 }

@@ -81,8 +81,7 @@ std::optional<ValueList> CallValidator::checkSimple(const std::string& name, con
     return ValueList{s.oldFactorValue.value_or(Value("OUI"))};
   }
   if (raw.isFactor() || raw.isDict()) {
-    error("CATALOG_2", name + " expects " + expectedTypes(s) + ", got a factor keyword occurrence _F(...)",
-          k.valueLocation);
+    error("CATALOG_2.2", {{"name", name}, {"expected_types", expectedTypes(s)}}, k.valueLocation);
     return std::nullopt;
   }
   ValueList given = items(raw);
@@ -90,8 +89,11 @@ std::optional<ValueList> CallValidator::checkSimple(const std::string& name, con
   if (given.size() < static_cast<std::size_t>(s.min) ||
       (s.max != kUnbounded && given.size() > static_cast<std::size_t>(s.max))) {
     error("CATALOG_4",
-          std::string(given.size() < static_cast<std::size_t>(s.min) ? "too few" : "too many") +
-              " values for " + name + ": expected " + countText(s) + ", got " + std::to_string(given.size()),
+          {{"given_count",
+            std::string(given.size() < static_cast<std::size_t>(s.min) ? "too few" : "too many")},
+           {"name", name},
+           {"count_text", countText(s)},
+           {"given_count_2", std::to_string(given.size())}},
           k.valueLocation);
   }
   ValueList out;
@@ -99,29 +101,32 @@ std::optional<ValueList> CallValidator::checkSimple(const std::string& name, con
     auto converted = convert(s, v);
     if (!converted) {
       if (v.isConcept() && !s.isConceptType()) {
-        error("CATALOG_2",
-              name + " expects " + expectedTypes(s) + ", got the concept " + v.asConcept()->name + " (a " +
-                  v.asConcept()->type + ")",
+        error("CATALOG_2.3",
+              {{"name", name},
+               {"expected_types", expectedTypes(s)},
+               {"name_2", v.asConcept()->name},
+               {"type", v.asConcept()->type}},
               k.valueLocation);
       } else if (v.isConcept() || s.isConceptType()) {
         std::string got =
             v.isConcept() ? v.asConcept()->name + " is a " + v.asConcept()->type : "got " + v.repr();
-        error("CATALOG_7", name + " expects " + joinNames(s.types, " or ") + "; " + got, k.valueLocation);
+        error("CATALOG_7", {{"name", name}, {"join_names", joinNames(s.types, " or ")}, {"got", got}},
+              k.valueLocation);
       } else {
-        error("CATALOG_2", name + " expects " + expectedTypes(s) + ", got " + v.repr(), k.valueLocation);
+        error("CATALOG_2.4", {{"name", name}, {"expected_types", expectedTypes(s)}, {"repr", v.repr()}},
+              k.valueLocation);
       }
       continue;
     }
     if (converted->isConcept() && converted->asConcept()->destroyed) {
-      error("CATALOG_16",
-            name + ": the concept " + converted->asConcept()->name + " was destroyed by DETRUIRE",
-            k.valueLocation);
+      error("CATALOG_16", {{"name", name}, {"name_2", converted->asConcept()->name}}, k.valueLocation);
       continue;
     }
     if (std::any_of(s.outOfScopeValues.begin(), s.outOfScopeValues.end(),
                     [&](const Value& x) { return x.equals(*converted); })) {
-      error("CATALOG_SCOPE", name + " = " + converted->repr() + " belongs to physics outside stella's scope",
-            k.valueLocation, {"allowed: " + joinValues(s.into)});
+      error("CATALOG_SCOPE.2",
+            {{"name", name}, {"repr", converted->repr()}, {"join_values", joinValues(s.into)}},
+            k.valueLocation);
       continue;
     }
     if (!s.into.empty() && std::none_of(s.into.begin(), s.into.end(),
@@ -146,8 +151,7 @@ std::optional<ValueList> CallValidator::checkSimple(const std::string& name, con
           near.push_back("did you mean " + names + "?");
         }
       }
-      error("CATALOG_3",
-            name + " = " + converted->repr() + " is not an allowed value; allowed: " + joinValues(s.into),
+      error("CATALOG_3", {{"name", name}, {"repr", converted->repr()}, {"join_values", joinValues(s.into)}},
             k.valueLocation, near);
       continue;
     }
@@ -158,20 +162,19 @@ std::optional<ValueList> CallValidator::checkSimple(const std::string& name, con
       if (!s.stellaNote.empty()) {
         notes.push_back(s.stellaNote);
       }
-      notImplementedYet(name + "=" + converted->repr() + " in " + where, "", k.valueLocation,
-                        std::move(notes));
+      notImplementedYet("CATALOG_17.value", {{"name", name}, {"value", converted->repr()}, {"where", where}},
+                        "", k.valueLocation, std::move(notes));
       continue;
     }
     if (converted->isNumber()) {
       double x = converted->asReal();
       if (s.valMin && x < *s.valMin) {
-        error("CATALOG_8",
-              name + " = " + converted->repr() + " is below its minimum " + Value(*s.valMin).repr(),
+        error("CATALOG_8", {{"name", name}, {"repr", converted->repr()}, {"repr_2", Value(*s.valMin).repr()}},
               k.valueLocation);
       }
       if (s.valMax && x > *s.valMax) {
-        error("CATALOG_8",
-              name + " = " + converted->repr() + " is above its maximum " + Value(*s.valMax).repr(),
+        error("CATALOG_8.2",
+              {{"name", name}, {"repr", converted->repr()}, {"repr_2", Value(*s.valMax).repr()}},
               k.valueLocation);
       }
     }
@@ -181,8 +184,7 @@ std::optional<ValueList> CallValidator::checkSimple(const std::string& name, con
     for (std::size_t i = 0; i < out.size(); ++i) {
       for (std::size_t j = i + 1; j < out.size(); ++j) {
         if (out[i].equals(out[j])) {
-          error("CATALOG_10", name + " lists " + out[i].repr() + " twice; each value may appear only once",
-                k.valueLocation);
+          error("CATALOG_10", {{"name", name}, {"repr", out[i].repr()}}, k.valueLocation);
           i = out.size();
           break;
         }

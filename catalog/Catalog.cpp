@@ -7,6 +7,7 @@
 #include "CommandSpec.hpp"
 #include "Validator.hpp"
 #include "interpreter/StringEscape.hpp"
+#include "messages/Messages.hpp"
 
 #include <fmt/format.h>
 
@@ -81,9 +82,9 @@ ValidatedCall Catalog::validate(const std::string& command, const CallArguments&
         best = name;
       }
     }
-    Diagnostic d = Diagnostic::syntax("CATALOG_12", "unknown command " + command, args.callLocation);
+    Diagnostic d = msg::make("CATALOG_12", {{"command", command}}, args.callLocation);
     if (!best.empty()) {
-      d.withNote("did you mean '" + best + "'?");
+      d.withNote(msg::text("CATALOG_12.n1", {{"best", best}}));
     }
     throw UserError(std::move(d));
   }
@@ -314,8 +315,7 @@ std::string describeReuse(const CommandSpec& c) {
 std::string Catalog::describe(const std::string& command) const {
   const CommandSpec* c = find(command);
   if (c == nullptr) {
-    throw UserError(Diagnostic::fatal("CATALOG_12", "unknown command " + command)
-                        .withNote("`stella catalog` lists the commands"));
+    throw UserError(msg::make("CATALOG_12.2", {{"command", command}}));
   }
   std::string out = c->name + " = " + commandKindName(c->kind) + "  -- " + c->description + "\n";
   out += "  returns: " + describeResult(*c) + "; " + describeReuse(*c) + "\n";

@@ -5,6 +5,7 @@
 #include "CommandSpec.hpp"
 
 #include "interpreter/Interpreter.hpp"
+#include "messages/Messages.hpp"
 
 #include <algorithm>
 #include <map>
@@ -113,8 +114,7 @@ public:
   }
   Value conceptAttribute(const std::shared_ptr<Concept>& concept_, const std::string& name,
                          const SourceLocation& at) override {
-    throw UserError(
-        Diagnostic::fatal("CATALOG_COV", "coverage runs do not compute " + concept_->name + "." + name, at));
+    throw UserError(msg::make("CATALOG_COV", {{"name", concept_->name}, {"name_2", name}}, at));
   }
   bool finished() const override { return finished_; }
 

@@ -4,6 +4,7 @@
 #include "Catalog.hpp"
 #include "CatalogText.hpp"
 #include "CommandSpec.hpp"
+#include "messages/Messages.hpp"
 
 #include <fmt/format.h>
 
@@ -155,7 +156,7 @@ std::string page(const CommandSpec& c) {
 void writeFile(const std::filesystem::path& path, const std::string& text) {
   std::ofstream f(path, std::ios::binary);
   if (!f || !(f << text)) {
-    throw UserError(Diagnostic::fatal("CATALOG_DOC", "cannot write " + path.string()));
+    throw UserError(msg::make("CATALOG_DOC", {{"path", path.string()}}));
   }
 }
 

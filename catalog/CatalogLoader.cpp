@@ -6,6 +6,7 @@
 
 #include "interpreter/Diagnostics.hpp"
 #include "interpreter/Interpreter.hpp"
+#include "messages/Messages.hpp"
 
 #include <algorithm>
 
@@ -32,8 +33,9 @@ public:
   }
 };
 
-[[noreturn]] void fail(const std::string& message) {
-  throw UserError(Diagnostic::fatal("CATALOG_DEF", message));
+// An error in a .cata file: catalogue entry `key` (messages/catalog.msg) formatted with `args`.
+[[noreturn]] void fail(std::string_view key, msg::Args args = {}) {
+  throw UserError(msg::make(key, args));
 }
 
 const SpecObject* specOf(const Value& v) {
@@ -42,7 +44,7 @@ const SpecObject* specOf(const Value& v) {
 
 std::string text(const KeywordArgument& k) {
   if (!k.value->isString()) {
-    fail(k.name + "= expects a text, got " + k.value->repr());
+    fail("CATALOG_DEF.3", {{"name", k.name}, {"repr", k.value->repr()}});
   }
   return k.value->asString();
 }
@@ -55,7 +57,7 @@ std::vector<std::string> texts(const KeywordArgument& k) {
   std::vector<std::string> out;
   for (const Value& v : listOf(*k.value)) {
     if (!v.isString()) {
-      fail(k.name + "= expects texts, got " + v.repr());
+      fail("CATALOG_DEF.4", {{"name", k.name}, {"repr", v.repr()}});
     }
     out.push_back(v.asString());
   }
@@ -67,7 +69,7 @@ int bound(const KeywordArgument& k) {
     return kUnbounded;
   }
   if (!k.value->isInt()) {
-    fail(k.name + "= expects an integer or '**', got " + k.value->repr());
+    fail("CATALOG_DEF.5", {{"name", k.name}, {"repr", k.value->repr()}});
   }
   return static_cast<int>(k.value->asInt());
 }
@@ -86,7 +88,7 @@ Presence presence(const KeywordArgument& k) {
   if (s == "d") {
     return Presence::Defaulted;
   }
-  fail("statut= expects 'o', 'f', 'c' or 'd', got '" + s + "'");
+  fail("CATALOG_DEF.6", {{"s", s}});
 }
 
 // Adds a child keyword or block to a level; returns false when the argument is an attribute.
@@ -97,7 +99,7 @@ bool addChild(Level& level, const KeywordArgument& k) {
   }
   for (const Entry& e : level.entries) {
     if (e.name == k.name) {
-      fail("keyword " + k.name + " is defined twice at the same level");
+      fail("CATALOG_DEF.7", {{"name", k.name}});
     }
   }
   level.entries.push_back(Entry{k.name, s->simple, s->factor, s->block});
@@ -110,7 +112,7 @@ bool levelAttribute(Level& level, const KeywordArgument& k) {
     for (const Value& v : listOf(*k.value)) {
       const SpecObject* s = specOf(v);
       if (s == nullptr || !s->rule) {
-        fail("regles= expects rules (UN_PARMI, EXCLUS...), got " + v.repr());
+        fail("CATALOG_DEF.8", {{"repr", v.repr()}});
       }
       level.rules.push_back(*s->rule);
     }
@@ -129,7 +131,7 @@ Value wrap(std::shared_ptr<SpecObject> s) {
 
 void noPositional(const CallArguments& a, const char* what) {
   if (!a.positional.empty()) {
-    fail(std::string(what) + " takes keyword arguments only");
+    fail("CATALOG_DEF.9", {{"what", std::string(what)}});
   }
 }
 
@@ -162,7 +164,7 @@ Value makeSimple(const CallArguments& a) {
       s->max = bound(k);
     } else if (k.name == "val_min" || k.name == "val_max") {
       if (!v.isNumber()) {
-        fail(k.name + "= expects a number, got " + v.repr());
+        fail("CATALOG_DEF.10", {{"name", k.name}, {"repr", v.repr()}});
       }
       (k.name == "val_min" ? s->valMin : s->valMax) = v.asReal();
     } else if (k.name == "validators") {
@@ -175,24 +177,24 @@ Value makeSimple(const CallArguments& a) {
     } else if (k.name == "forme_2020") {
       const SpecObject* o = specOf(v);
       if (o == nullptr || !o->factor) {
-        fail("forme_2020= expects a FACT(...)");
+        fail("CATALOG_DEF.11", {});
       }
       s->oldFactorForm = o->factor;
     } else if (k.name == "valeur_2020") {
       s->oldFactorValue = v;
     } else {
-      fail("SIMP has no attribute " + k.name);
+      fail("CATALOG_DEF.12", {{"name", k.name}});
     }
   }
   if (s->types.empty()) {
-    fail("SIMP needs typ=");
+    fail("CATALOG_DEF.13", {});
   }
   if (s->acceptedValue && !s->notImplemented) {
-    fail("accepte= goes with non_implemente= (the one value accepted of a keyword not implemented)");
+    fail("CATALOG_DEF.14", {});
   }
   for (const Value& v : s->implementedValues) {
     if (std::none_of(s->into.begin(), s->into.end(), [&](const Value& x) { return x.equals(v); })) {
-      fail("implemente= lists " + v.repr() + ", which is not a value of into=");
+      fail("CATALOG_DEF.15", {{"repr", v.repr()}});
     }
   }
   auto o = std::make_shared<SpecObject>();
@@ -222,7 +224,7 @@ Value makeFactor(const CallArguments& a) {
     } else if (k.name == "stella") {
       f->stellaNote = text(k);
     } else {
-      fail("FACT has no attribute " + k.name + " (a keyword's value must be SIMP, FACT or BLOC)");
+      fail("CATALOG_DEF.16", {{"name", k.name}});
     }
   }
   auto o = std::make_shared<SpecObject>();
@@ -244,11 +246,11 @@ Value makeBlock(const CallArguments& a) {
     } else if (k.name == "fr") {
       b->description = text(k);
     } else {
-      fail("BLOC has no attribute " + k.name);
+      fail("CATALOG_DEF.17", {{"name", k.name}});
     }
   }
   if (!b->condition) {
-    fail("BLOC needs condition=");
+    fail("CATALOG_DEF.18", {});
   }
   auto o = std::make_shared<SpecObject>();
   o->block = std::move(b);
@@ -273,14 +275,14 @@ NativeFunction makeCommand(CommandKind kind) {
         } else if (v.isDict()) {
           for (const auto& [cond, type] : v.asDict()->items) {
             if (!cond.isString() || !type.isString()) {
-              fail("result= expects {'condition': 'type', ...}");
+              fail("CATALOG_DEF.19", {});
             }
             c->resultCases.emplace_back(
                 std::make_shared<const CompiledExpression>(CompiledExpression::compile(cond.asString())),
                 type.asString());
           }
         } else {
-          fail("result= expects a type name or {'condition': 'type', ...}");
+          fail("CATALOG_DEF.20", {});
         }
       } else if (k.name == "result_from") {
         c->resultFrom = texts(k);
@@ -289,7 +291,7 @@ NativeFunction makeCommand(CommandKind kind) {
       } else if (k.name == "reentrant") {
         std::string r = text(k);
         if (r.empty() || (r[0] != 'n' && r[0] != 'o' && r[0] != 'f')) {
-          fail("reentrant= expects 'n', 'o:KEYWORD' or 'f:KEYWORD'");
+          fail("CATALOG_DEF.21", {});
         }
         c->reentrant = r[0];
         if (r.size() > 2 && r[1] == ':') {
@@ -300,11 +302,11 @@ NativeFunction makeCommand(CommandKind kind) {
       } else if (k.name == "non_implemente") {
         c->notImplemented = text(k);
       } else {
-        fail("OPER/MACRO/PROC has no attribute " + k.name);
+        fail("CATALOG_DEF.22", {{"name", k.name}});
       }
     }
     if (kind == CommandKind::Proc && (!c->resultType.empty() || !c->resultCases.empty())) {
-      fail("a PROC returns nothing: remove result=");
+      fail("CATALOG_DEF.23", {});
     }
     auto o = std::make_shared<SpecObject>();
     o->command = std::move(c);
@@ -318,13 +320,13 @@ NativeFunction makeRule(Rule::Kind kind) {
     r.kind = kind;
     for (const Value& v : a.positional) {
       if (!v.isString()) {
-        fail("a rule lists keyword names, got " + v.repr());
+        fail("CATALOG_DEF.24", {{"repr", v.repr()}});
       }
       r.names.push_back(v.asString());
     }
     for (const KeywordArgument& k : a.keywords) {
       if (kind != Rule::Kind::UnParmi && kind != Rule::Kind::AuMoinsUn) {
-        fail("only UN_PARMI and AU_MOINS_UN carry defaults");
+        fail("CATALOG_DEF.25", {});
       }
       r.defaults.emplace_back(k.name, *k.value);
     }
@@ -347,11 +349,11 @@ public:
 class NoCommands : public CommandHandler {
 public:
   Value callCommand(const std::string& command, const CallArguments&, const std::string&) override {
-    throw UserError(Diagnostic::fatal("CATALOG_DEF", "a catalogue file cannot run the command " + command));
+    throw UserError(msg::make("CATALOG_DEF", {{"command", command}}));
   }
   Value conceptAttribute(const std::shared_ptr<Concept>&, const std::string& name,
                          const SourceLocation& at) override {
-    throw UserError(Diagnostic::fatal("CATALOG_DEF", "no attribute " + name, at));
+    throw UserError(msg::make("CATALOG_DEF.2", {{"name", name}}, at));
   }
   bool finished() const override { return false; }
 };
@@ -392,7 +394,7 @@ LoadedCatalog loadCatalog(const std::vector<CatalogFile>& files) {
       out.types.addKnown(k.name);
       for (const Value& child : listOf(*k.value)) {
         if (!child.isString()) {
-          fail("TYPES(parent=('child', ...)) expects type names");
+          fail("CATALOG_DEF.26", {});
         }
         out.types.addParent(child.asString(), k.name);
       }

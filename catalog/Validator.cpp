@@ -1,5 +1,6 @@
 // Validation of one command call against its catalogue entry (see Validator.hpp).
 #include "CallValidator.hpp"
+#include "messages/Messages.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -62,8 +63,7 @@ bool matches(const Value& given, const Value& wanted) {
 
 std::string nameArgument(const CallArguments& args, const char* helper) {
   if (args.positional.empty() || !args.positional.front().isString()) {
-    throw UserError(
-        Diagnostic::fatal("CATALOG_40", std::string(helper) + "() expects a keyword name as first argument"));
+    throw UserError(msg::make("CATALOG_40", {{"helper", std::string(helper)}}));
   }
   return args.positional.front().asString();
 }
@@ -84,7 +84,7 @@ CompiledExpression::Lookup levelLookup(const std::map<std::string, Value>& value
       return makeNativeFunction(name, [valueOf, name](const CallArguments& a) -> Value {
         std::string kw = nameArgument(a, name.c_str());
         if (a.positional.size() != 2) {
-          throw UserError(Diagnostic::fatal("CATALOG_40", name + "() expects a keyword name and a value"));
+          throw UserError(msg::make("CATALOG_40.2", {{"name", name}}));
         }
         return Value(matches(valueOf(kw), a.positional[1]));
       });

@@ -10,8 +10,10 @@
 
 namespace stella {
 
-void langError(std::string id, std::string message, std::string note) {
-  throw LangError{std::move(id), std::move(message), std::move(note)};
+void langError(std::string_view key, msg::Args args) {
+  Diagnostic d = msg::make(key, args);
+  STELLA_ASSERT(d.notes.size() <= 1, "a language error has one note at most");
+  throw LangError{std::move(d.id), std::move(d.message), d.notes.empty() ? std::string() : d.notes.front()};
 }
 
 namespace {
@@ -29,26 +31,21 @@ std::complex<double> toComplex(const Value& v) {
 }
 
 [[noreturn]] void unsupported(const char* op, const Value& a, const Value& b) {
-  langError("LANG_TYPE", std::string("unsupported operand types for ") + op + ": '" + a.typeName() +
-                             "' and '" + b.typeName() + "'");
+  langError("LANG_TYPE.10", {{"op", op}, {"type_name", a.typeName()}, {"type_name_2", b.typeName()}});
 }
 
 [[noreturn]] void overflow() {
-  langError("LANG_VALUE", "integer result too large",
-            "stella's integers have 64 bits; use a real number (e.g. 2.**70)");
+  langError("LANG_VALUE.2", {});
 }
 
 [[noreturn]] void divisionByZero(const char* what) {
-  langError("LANG_ZERO", std::string(what) + " by zero");
+  langError("LANG_ZERO", {{"what", std::string(what)}});
 }
 
 // Python raises OverflowError when a power of finite numbers is too large for a float (where
 // `*` and `+` give inf): `2.0 ** 1e6`.
 [[noreturn]] void powerOverflow(const Value& a, const Value& b) {
-  langError("LANG_OVERFLOW",
-            "numerical result out of range: " + a.repr() + " ** " + b.repr() +
-                " is larger than the largest float (about 1.8e308)",
-            "Python raises OverflowError here; check the exponent");
+  langError("LANG_OVERFLOW", {{"repr", a.repr()}, {"repr_2", b.repr()}});
 }
 
 std::int64_t intPower(std::int64_t base, std::int64_t exponent) {
@@ -70,7 +67,7 @@ double realPower(double a, double b) {
     divisionByZero("0.0 cannot be raised to a negative power: division");
   }
   if (a < 0.0 && b != std::floor(b)) {
-    langError("LANG_VALUE", "a negative number cannot be raised to a fractional power");
+    langError("LANG_VALUE.3", {});
   }
   double result = std::pow(a, b);
   if (std::isinf(result) && std::isfinite(a) && std::isfinite(b)) {
@@ -86,8 +83,7 @@ Value repeat(const Value& seq, std::int64_t times, const RuntimeLimits& limits) 
   if (seq.isString()) {
     const std::string& s = seq.asString();
     if (!s.empty() && times > limits.maxStringLength / static_cast<std::int64_t>(s.size())) {
-      langError("LANG_SIZE",
-                "string too long (more than " + std::to_string(limits.maxStringLength) + " characters)");
+      langError("LANG_SIZE.2", {{"max_string_length", std::to_string(limits.maxStringLength)}});
     }
     chargeBulk(times, static_cast<std::int64_t>(s.size()));
     std::string out;
@@ -99,8 +95,7 @@ Value repeat(const Value& seq, std::int64_t times, const RuntimeLimits& limits) 
   }
   const ValueList& items = seq.items();
   if (!items.empty() && times > limits.maxSequenceLength / static_cast<std::int64_t>(items.size())) {
-    langError("LANG_SIZE",
-              "sequence too long (more than " + std::to_string(limits.maxSequenceLength) + " items)");
+    langError("LANG_SIZE.3", {{"max_sequence_length", std::to_string(limits.maxSequenceLength)}});
   }
   chargeBulk(static_cast<std::int64_t>(items.size()) * times, sizeof(Value));
   ValueList out;
@@ -114,14 +109,14 @@ Value repeat(const Value& seq, std::int64_t times, const RuntimeLimits& limits) 
 Value concatenate(const Value& a, const Value& b, const RuntimeLimits& limits) {
   if (a.isString()) {
     if (static_cast<std::int64_t>(a.asString().size() + b.asString().size()) > limits.maxStringLength) {
-      langError("LANG_SIZE", "string too long");
+      langError("LANG_SIZE.4", {});
     }
     chargeBulk(1, static_cast<std::int64_t>(a.asString().size() + b.asString().size()));
     return Value(a.asString() + b.asString());
   }
   const ValueList& more = b.items();
   if (static_cast<std::int64_t>(a.items().size() + more.size()) > limits.maxSequenceLength) {
-    langError("LANG_SIZE", "sequence too long");
+    langError("LANG_SIZE.5", {});
   }
   chargeBulk(static_cast<std::int64_t>(a.items().size() + more.size()), sizeof(Value));
   ValueList out = a.items();
@@ -191,7 +186,7 @@ Value intArithmetic(BinaryOp op, std::int64_t x, std::int64_t y) {
     return Value(x ^ y);
   case BinaryOp::LShift:
     if (y < 0) {
-      langError("LANG_VALUE", "negative shift count");
+      langError("LANG_VALUE.4", {});
     }
     if (y >= 63 || (x != 0 && (x > (std::numeric_limits<std::int64_t>::max() >> y) ||
                                x < (std::numeric_limits<std::int64_t>::min() >> y)))) {
@@ -203,7 +198,7 @@ Value intArithmetic(BinaryOp op, std::int64_t x, std::int64_t y) {
     return Value(static_cast<std::int64_t>(static_cast<std::uint64_t>(x) << y));
   case BinaryOp::RShift:
     if (y < 0) {
-      langError("LANG_VALUE", "negative shift count");
+      langError("LANG_VALUE.4", {});
     }
     return Value(y >= 63 ? (x < 0 ? std::int64_t{-1} : std::int64_t{0}) : (x >> y));
   }
@@ -291,8 +286,7 @@ Value binaryOperation(BinaryOp op, const Value& a, const Value& b, const Runtime
       return concatenate(a, b, limits);
     }
     if (a.isString() || b.isString()) {
-      langError("LANG_TYPE", "cannot add '" + a.typeName() + "' and '" + b.typeName() + "'",
-                "convert the number with str(...) or use formatting: 'x=%g' % x");
+      langError("LANG_TYPE.11", {{"type_name", a.typeName()}, {"type_name_2", b.typeName()}});
     }
     break;
   case BinaryOp::Mul:
@@ -344,8 +338,7 @@ Value unaryOperation(UnaryOp op, const Value& a) {
     }
     break;
   }
-  langError("LANG_TYPE",
-            std::string("bad operand type for unary ") + unaryOpText(op) + ": '" + a.typeName() + "'");
+  langError("LANG_TYPE.12", {{"unary_op_text", unaryOpText(op)}, {"type_name", a.typeName()}});
 }
 
 } // namespace stella

@@ -16,8 +16,9 @@ inline void arity(const CallArguments& a, const std::string& name, std::size_t m
     if (max == min + 1000) {
       expected = "at least " + std::to_string(min);
     }
-    langError("LANG_ARGS", name + "() takes " + expected + " positional arguments but " +
-                               std::to_string(a.positional.size()) + " were given");
+    langError(
+        "LANG_ARGS.12",
+        {{"name", name}, {"expected", expected}, {"positional_count", std::to_string(a.positional.size())}});
   }
 }
 
@@ -29,7 +30,7 @@ inline void onlyKeywords(const CallArguments& a, const std::string& name,
       ok = ok || kw.name == k;
     }
     if (!ok) {
-      langError("LANG_ARGS", name + "() got an unexpected keyword argument '" + kw.name + "'");
+      langError("LANG_ARGS.6", {{"name", name}, {"name_2", kw.name}});
     }
   }
 }

@@ -39,7 +39,7 @@ Value makeRange(const CallArguments& a) {
     }
   }
   if (step == 0) {
-    langError("LANG_VALUE", "range() step must not be zero");
+    langError("LANG_VALUE.33", {});
   }
   return Value(std::shared_ptr<NativeObject>(std::make_shared<RangeObject>(start, stop, step)));
 }
@@ -63,7 +63,7 @@ Value length(const Value& v) {
   if (const auto* seq = v.isNative() ? dynamic_cast<const SequenceObject*>(v.asNative().get()) : nullptr) {
     return Value(seq->length());
   }
-  langError("LANG_TYPE", "object of type '" + v.typeName() + "' has no len()");
+  langError("LANG_TYPE.30", {{"type_name", v.typeName()}});
 }
 
 Value extreme(Evaluator& ev, const CallArguments& a, const Pos& at, bool wantMax) {
@@ -78,7 +78,7 @@ Value extreme(Evaluator& ev, const CallArguments& a, const Pos& at, bool wantMax
     if (const Value* d = keyword(a, "default")) {
       return *d;
     }
-    langError("LANG_VALUE", std::string(name) + "() of an empty sequence");
+    langError("LANG_VALUE.34", {{"name", std::string(name)}});
   }
   const Value* key = keyword(a, "key");
   auto keyOf = [&](const Value& v) {

@@ -4,6 +4,7 @@
 #include "BuiltinArguments.hpp"
 #include "Exceptions.hpp"
 #include "SequenceObject.hpp"
+#include "messages/Messages.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +25,7 @@ Value builtinValue(Id id, const char* name) {
 Value absolute(const Value& v) {
   if (v.isInt() || v.isBool()) {
     if (v.asInt() == std::numeric_limits<std::int64_t>::min()) {
-      langError("LANG_VALUE", "integer result too large");
+      langError("LANG_VALUE.27", {});
     }
     return Value(v.asInt() < 0 ? -v.asInt() : v.asInt());
   }
@@ -34,7 +35,7 @@ Value absolute(const Value& v) {
   if (v.kind() == Value::Kind::Complex) {
     return Value(std::abs(v.asComplex()));
   }
-  langError("LANG_TYPE", "bad operand type for abs(): '" + v.typeName() + "'");
+  langError("LANG_TYPE.23", {{"type_name", v.typeName()}});
 }
 
 Value roundValue(const CallArguments& a) {
@@ -47,7 +48,7 @@ Value roundValue(const CallArguments& a) {
   if (a.positional.size() == 1 || a.positional[1].isNone()) {
     double r = std::nearbyint(d);
     if (!std::isfinite(r) || std::fabs(r) > 9.2e18) {
-      langError("LANG_VALUE", "cannot round " + x.repr() + " to an integer");
+      langError("LANG_VALUE.28", {{"repr", x.repr()}});
     }
     return Value(static_cast<std::int64_t>(r));
   }
@@ -75,7 +76,7 @@ Value makeDict(Evaluator& ev, const CallArguments& a) {
     } else {
       for (const Value& pair : iterableItems(src, ev.options().limits)) {
         if (!pair.isSequence() || pair.items().size() != 2) {
-          langError("LANG_VALUE", "dict() needs pairs (key, value)");
+          langError("LANG_VALUE.29", {});
         }
         dictSet(*dict, pair.items()[0], pair.items()[1]);
       }
@@ -103,8 +104,7 @@ bool isInstanceOf(const Value& v, const Value& type) {
   }
   const Builtin* b = type.isCallable() ? dynamic_cast<const Builtin*>(type.asCallable().get()) : nullptr;
   if (b == nullptr) {
-    langError("LANG_TYPE",
-              "isinstance() needs a type (int, float, str, bool, list, tuple, dict) or a tuple of types");
+    langError("LANG_TYPE.24", {});
   }
   switch (b->id) {
   case Id::Int:
@@ -122,13 +122,13 @@ bool isInstanceOf(const Value& v, const Value& type) {
   case Id::Dict:
     return v.isDict();
   default:
-    langError("LANG_TYPE", "isinstance() needs a type, not the function " + b->name() + "()");
+    langError("LANG_TYPE.25", {{"name", b->name()}});
   }
 }
 
 Value makeFactor(Evaluator& ev, const CallArguments& a, const Pos& at) {
   if (!a.positional.empty()) {
-    langError("LANG_ARGS", "_F() takes keyword arguments only, e.g. _F(GROUP_MA='Top', DX=0.0)");
+    langError("LANG_ARGS.10", {});
   }
   auto f = std::make_shared<FactorObject>();
   f->keywords = a.keywords;
@@ -183,7 +183,7 @@ Value print(Evaluator& ev, const CallArguments& a, const Pos& at) {
     text += end;
   }
   if (ev.sink() != nullptr) {
-    ev.sink()->report(Diagnostic::info("PRINT", text, ev.location(at)));
+    ev.sink()->report(msg::make("PRINT", {{"text", text}}, ev.location(at)));
   }
   return Value();
 }
@@ -291,7 +291,7 @@ Value callBuiltinUnlocated(Evaluator& ev, const Builtin& b, const CallArguments&
   case Id::Filter:
     return callEach(ev, a, at, true);
   }
-  langError("LANG_CALL", name + "() is not available");
+  langError("LANG_CALL", {{"name", name}});
 }
 
 } // namespace

@@ -34,13 +34,11 @@ int order(const Value& a, const Value& b, int depth = 0) {
   }
   if ((a.isTuple() && b.isTuple()) || (a.isList() && b.isList())) {
     if (depth >= maxValueNesting) {
-      langError("LANG_DEPTH", "values nested too deeply to order (more than " +
-                                  std::to_string(maxValueNesting) + " levels)");
+      langError("LANG_DEPTH.2", {{"max_value_nesting", std::to_string(maxValueNesting)}});
     }
     return compareSequences(a.items(), b.items(), depth);
   }
-  langError("LANG_TYPE",
-            "cannot order '" + a.typeName() + "' and '" + b.typeName() + "' (with <, >, <=, >=)");
+  langError("LANG_TYPE.20", {{"type_name", a.typeName()}, {"type_name_2", b.typeName()}});
 }
 
 int compareSequences(const ValueList& a, const ValueList& b, int depth) {
@@ -84,7 +82,7 @@ bool lessThan(const Value& a, const Value& b) {
 bool contains(const Value& container, const Value& item) {
   if (container.isString()) {
     if (!item.isString()) {
-      langError("LANG_TYPE", "'in <string>' requires a string on the left, not '" + item.typeName() + "'");
+      langError("LANG_TYPE.21", {{"type_name", item.typeName()}});
     }
     return container.asString().find(item.asString()) != std::string::npos;
   }
@@ -113,7 +111,7 @@ bool contains(const Value& container, const Value& item) {
     }
     return (i - r->start) % r->step == 0;
   }
-  langError("LANG_TYPE", "argument of type '" + container.typeName() + "' is not a container (for 'in')");
+  langError("LANG_TYPE.22", {{"type_name", container.typeName()}});
 }
 
 bool compareOperation(CompareOp op, const Value& a, const Value& b) {

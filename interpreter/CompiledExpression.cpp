@@ -5,6 +5,7 @@
 #include "Evaluator.hpp"
 #include "Interpreter.hpp"
 #include "Parser.hpp"
+#include "messages/Messages.hpp"
 
 #include <algorithm>
 #include <unordered_set>
@@ -60,7 +61,7 @@ std::vector<Diagnostic> EmbeddedText::map(std::vector<Diagnostic> ds) const {
   for (auto& d : ds) {
     d.location = map(d.location);
     if (!mapped_ && origin_.known() && d.location.file == file_) {
-      d.withNote("in the expression written at " + origin_.str());
+      d.withNote(msg::text("NOTE.n4", {{"origin", origin_.str()}}));
     }
   }
   return ds;
@@ -120,7 +121,7 @@ CompiledExpression CompiledExpression::compile(const std::string& text, const So
   ParseResult parsed = parseExpressionFile(c.impl_->embedded.file());
   if (!parsed.errors.empty() || parsed.module->body.empty()) {
     if (parsed.errors.empty()) {
-      parsed.errors.push_back(Diagnostic::syntax("SYNTAX_1", "empty expression", {}));
+      parsed.errors.push_back(msg::make("SYNTAX_1", {}, {}));
     }
     throw UserError(c.impl_->embedded.map(std::move(parsed.errors)));
   }

@@ -44,8 +44,7 @@ ValueList iterableItems(const Value& v, const RuntimeLimits& limits) {
   }
   if (const RangeObject* r = asRange(v)) {
     if (r->size() > limits.maxSequenceLength) {
-      langError("LANG_SIZE", "range too long to make a list (more than " +
-                                 std::to_string(limits.maxSequenceLength) + " items)");
+      langError("LANG_SIZE", {{"max_sequence_length", std::to_string(limits.maxSequenceLength)}});
     }
   }
   ValueList out;
@@ -63,19 +62,15 @@ std::size_t normalizeIndex(std::int64_t index, std::size_t size, const char* wha
   auto n = static_cast<std::int64_t>(size);
   std::int64_t i = index < 0 ? index + n : index;
   if (i < 0 || i >= n) {
-    langError("LANG_INDEX",
-              std::string(what) + " index " + std::to_string(index) + " out of range (size " +
-                  std::to_string(size) + ")",
-              size == 0 ? "the " + std::string(what) + " is empty"
-                        : "valid indices are 0 to " + std::to_string(n - 1) + " (or -" + std::to_string(n) +
-                              " to -1)");
+    langError(size == 0 ? "LANG_INDEX.empty" : "LANG_INDEX.range",
+              {{"what", what}, {"index", index}, {"size", size}, {"last", n - 1}, {"n", n}});
   }
   return static_cast<std::size_t>(i);
 }
 
 std::int64_t toIndex(const Value& v, const char* what) {
   if (!isIntLike(v)) {
-    langError("LANG_TYPE", std::string(what) + " must be an integer, not '" + v.typeName() + "'");
+    langError("LANG_TYPE.2", {{"what", std::string(what)}, {"type_name", v.typeName()}});
   }
   return v.asInt();
 }
@@ -92,7 +87,7 @@ SliceBounds sliceBounds(const Value& slice, std::size_t size) {
   auto n = static_cast<std::int64_t>(size);
   std::int64_t step = parts[2].isNone() ? 1 : toIndex(parts[2], "slice step");
   if (step == 0) {
-    langError("LANG_VALUE", "slice step cannot be zero");
+    langError("LANG_VALUE", {});
   }
   auto clamp = [&](const Value& v, std::int64_t dflt) {
     if (v.isNone()) {
@@ -163,7 +158,7 @@ Value getItem(const Value& container, const Value& index) {
                                          [&](ValueList& o, std::size_t i) { o.push_back(items[i]); });
       return container.isTuple() ? Value::tuple(std::move(out)) : Value::list(std::move(out));
     }
-    langError("LANG_TYPE", "'" + container.typeName() + "' object cannot be sliced");
+    langError("LANG_TYPE.3", {{"type_name", container.typeName()}});
   }
   if (container.isSequence()) {
     const ValueList& items = container.items();
@@ -177,7 +172,7 @@ Value getItem(const Value& container, const Value& index) {
     checkHashable(index);
     const Value* v = dictFind(*container.asDict(), index);
     if (v == nullptr) {
-      langError("LANG_KEY", "key " + index.repr() + " not found in the dict");
+      langError("LANG_KEY", {{"repr", index.repr()}});
     }
     return *v;
   }
@@ -191,16 +186,14 @@ Value getItem(const Value& container, const Value& index) {
     return seq->item(static_cast<std::int64_t>(
         normalizeIndex(toIndex(index, "index"), static_cast<std::size_t>(seq->length()), what.c_str())));
   }
-  langError("LANG_TYPE", "'" + container.typeName() + "' object is not subscriptable",
-            container.isConcept()
-                ? "a concept's contents are read with commands or its methods, e.g. TAB.EXTR_TABLE()"
-                : "");
+  langError(container.isConcept() ? "LANG_TYPE.concept_subscript" : "LANG_TYPE.subscript",
+            {{"type", container.typeName()}});
 }
 
 void setItem(const Value& container, const Value& index, const Value& value) {
   if (container.isList()) {
     if (asSlice(index) != nullptr) {
-      langError("LANG_TYPE", "assignment to a slice is not supported", "assign the elements one by one");
+      langError("LANG_TYPE.4", {});
     }
     auto& items = container.asList()->items;
     items[normalizeIndex(toIndex(index, "list index"), items.size(), "list")] = value;
@@ -210,8 +203,8 @@ void setItem(const Value& container, const Value& index, const Value& value) {
     dictSet(*container.asDict(), index, value);
     return;
   }
-  langError("LANG_TYPE", "'" + container.typeName() + "' object does not support item assignment",
-            container.isTuple() ? "tuples cannot be changed; use a list [...] instead" : "");
+  langError(container.isTuple() ? "LANG_TYPE.tuple_assignment" : "LANG_TYPE.assignment",
+            {{"type", container.typeName()}});
 }
 
 void deleteItem(const Value& container, const Value& index) {
@@ -229,15 +222,14 @@ void deleteItem(const Value& container, const Value& index) {
         return;
       }
     }
-    langError("LANG_KEY", "key " + index.repr() + " not found in the dict");
+    langError("LANG_KEY", {{"repr", index.repr()}});
   }
-  langError("LANG_TYPE", "'" + container.typeName() + "' object does not support item deletion");
+  langError("LANG_TYPE.5", {{"type_name", container.typeName()}});
 }
 
 void checkHashable(const Value& key) {
   if (key.isList() || key.isDict()) {
-    langError("LANG_TYPE", "a '" + key.typeName() + "' cannot be a dict key",
-              "use a tuple instead of a list");
+    langError("LANG_TYPE.6", {{"type_name", key.typeName()}});
   }
 }
 

@@ -6,6 +6,7 @@
 #include "EvaluatorParts.hpp"
 
 #include "Formatter.hpp"
+#include "messages/Messages.hpp"
 
 namespace stella {
 
@@ -27,16 +28,23 @@ private:
 Evaluator::Evaluator(CommandHandler* handler, DiagnosticSink* sink, EvaluatorOptions options)
     : handler_(handler), sink_(sink), options_(options), meter_(options.budget) {}
 
-void Evaluator::raise(const Pos& pos, const std::string& id, const std::string& message,
-                      const std::string& note) const {
-  Diagnostic d = Diagnostic::fatal(id, message, location(pos));
+void Evaluator::raise(const Pos& pos, std::string_view key, msg::Args args, const std::string& note) const {
+  const Diagnostic d = msg::make(key, args);
+  STELLA_ASSERT(d.notes.size() <= 1 && (d.notes.empty() || note.empty()), "one note at most");
+  raise(pos, LangError{d.id, d.message, d.notes.empty() ? note : d.notes.front()});
+}
+
+void Evaluator::raise(const Pos& pos, const LangError& e) const {
+  const std::string& id = e.id;
+  const std::string& note = e.note;
+  Diagnostic d = Diagnostic::fatal(id, e.message, location(pos));
   if (id == "LANG_BUDGET" && !loops_.empty()) {
     // the loop is the culprit: the error points at it, a note at where the budget ran out
     const RunningLoop& loop = loops_.back();
     const Pos& at = loop.statement != nullptr ? loop.statement->pos : loop.clause->pos;
     d.location = location(at);
     d.withNote(runningLoopNote());
-    d.withNote("the budget ran out at " + location(pos).str());
+    d.withNote(msg::text("LANG_BUDGET.n1", {{"location", location(pos).str()}}));
   }
   if (!note.empty()) {
     d.withNote(note);

@@ -57,9 +57,11 @@ public:
   SourceLocation location(const Pos& pos) const {
     return SourceLocation{file_, pos.line, pos.column, pos.length};
   }
-  [[noreturn]] void raise(const Pos& pos, const std::string& id, const std::string& message,
+  // Throws catalogue entry `key` (messages/language.msg) with `args` at `pos`; `note`, when not
+  // empty, is a computed advice (a spelling suggestion) for an entry that has none.
+  [[noreturn]] void raise(const Pos& pos, std::string_view key, msg::Args args = {},
                           const std::string& note = {}) const;
-  [[noreturn]] void raise(const Pos& pos, const LangError& e) const { raise(pos, e.id, e.message, e.note); }
+  [[noreturn]] void raise(const Pos& pos, const LangError& e) const;
 
   const EvaluatorOptions& options() const { return options_; }
   DiagnosticSink* sink() const { return sink_; }

@@ -3,6 +3,7 @@
 #include "EvaluatorParts.hpp"
 #include "Exceptions.hpp"
 #include "Suggest.hpp"
+#include "messages/Messages.hpp"
 
 #include <algorithm>
 
@@ -36,14 +37,14 @@ void Evaluator::collectArguments(const Expr& call, std::size_t first, CallArgume
     case ExprKind::DoubleStar: {
       Value v = eval(*a.items[0]);
       if (!v.isDict()) {
-        raise(a.pos, "LANG_TYPE", "'**' needs a dict, not '" + v.typeName() + "'");
+        raise(a.pos, "LANG_TYPE.37", {{"type_name", v.typeName()}});
       }
       for (const auto& [key, value] : v.asDict()->items) {
         if (!key.isString()) {
-          raise(a.pos, "LANG_TYPE", "keywords given with '**' must be strings, not '" + key.typeName() + "'");
+          raise(a.pos, "LANG_TYPE.38", {{"type_name", key.typeName()}});
         }
         if (args.find(key.asString()) != nullptr) {
-          raise(a.pos, "LANG_ARGS", "keyword argument '" + key.asString() + "' given twice");
+          raise(a.pos, "LANG_ARGS.13", {{"as_string", key.asString()}});
         }
         args.keywords.push_back(KeywordArgument{key.asString(), std::make_shared<const Value>(value),
                                                 location(a.pos), location(a.pos)});
@@ -110,8 +111,10 @@ Value Evaluator::call(const Value& callee, const CallArguments& args, const Pos&
       return call(fn, args, at);
     }
   }
-  raise(at, "LANG_CALL", "'" + callee.typeName() + "' object is not callable",
-        callee.isConcept() ? "concept '" + callee.asConcept()->name + "' is not a function" : "");
+  if (callee.isConcept()) {
+    raise(at, "LANG_CALL.concept", {{"type", callee.typeName()}, {"name", callee.asConcept()->name}});
+  }
+  raise(at, "LANG_CALL.value", {{"type", callee.typeName()}});
 }
 
 void Evaluator::checkNotDestroyed(const Value& v, const Pos& at, int depth) const {
@@ -119,8 +122,7 @@ void Evaluator::checkNotDestroyed(const Value& v, const Pos& at, int depth) cons
     return;
   }
   if (v.isConcept() && v.asConcept()->destroyed) {
-    raise(at, "LANG_DESTROYED",
-          "concept '" + v.asConcept()->name + "' was destroyed (by DETRUIRE) and cannot be used");
+    raise(at, "LANG_DESTROYED.4", {{"name", v.asConcept()->name}});
   }
   if (v.isSequence()) {
     for (const Value& item : v.items()) {
@@ -136,7 +138,7 @@ void Evaluator::checkNotDestroyed(const Value& v, const Pos& at, int depth) cons
 Value Evaluator::callCommand(const std::string& name, const CallArguments& args, const Pos& at,
                              const std::string& target) {
   if (handler_ == nullptr) {
-    raise(at, "LANG_CALL", "command " + name + " cannot be called here");
+    raise(at, "LANG_CALL.2", {{"name", name}});
   }
   for (std::size_t i = 0; i < args.positional.size(); ++i) {
     checkNotDestroyed(args.positional[i], at);
@@ -148,10 +150,7 @@ Value Evaluator::callCommand(const std::string& name, const CallArguments& args,
     try {
       checkNotDestroyed(*kw.value, at);
     } catch (UserError&) {
-      Diagnostic d = Diagnostic::fatal("LANG_DESTROYED",
-                                       "keyword " + kw.name + " of " + name +
-                                           " refers to a concept destroyed by DETRUIRE",
-                                       kw.valueLocation);
+      Diagnostic d = msg::make("LANG_DESTROYED", {{"name", kw.name}, {"name_2", name}}, kw.valueLocation);
       throw UserError(std::move(d));
     }
   }
@@ -187,7 +186,7 @@ Value Evaluator::callNative(const NativeCallable& fn, const CallArguments& args,
         d.location = location(at);
         changed = true;
       } else if (d.location.file != file_ || d.location.line != at.line) {
-        d.withNote("while evaluating the call of " + fn.name() + " at " + location(at).str());
+        d.withNote(msg::text("NOTE.n5", {{"name", fn.name()}, {"location", location(at).str()}}));
         changed = true;
       }
     }
@@ -202,9 +201,7 @@ Value Evaluator::callNative(const NativeCallable& fn, const CallArguments& args,
 
 Value Evaluator::callUser(const UserFunction& fn, const CallArguments& args, const Pos& at) {
   if (callDepth_ >= options_.maxCallDepth) {
-    raise(at, "LANG_DEPTH",
-          "too many nested function calls (more than " + std::to_string(options_.maxCallDepth) + ")",
-          "is a function calling itself without end?");
+    raise(at, "LANG_DEPTH.4", {{"max_call_depth", std::to_string(options_.maxCallDepth)}});
   }
   Scope local;
   local.function = true;
@@ -212,9 +209,8 @@ Value Evaluator::callUser(const UserFunction& fn, const CallArguments& args, con
   if (fn.lambda != nullptr) {
     std::size_t n = fn.lambda->items.size() - 1;
     if (args.positional.size() != n || !args.keywords.empty()) {
-      raise(at, "LANG_ARGS",
-            "lambda takes " + std::to_string(n) + " positional arguments but " +
-                std::to_string(args.positional.size()) + " were given");
+      raise(at, "LANG_ARGS.14",
+            {{"n", std::to_string(n)}, {"positional_count", std::to_string(args.positional.size())}});
     }
     for (std::size_t i = 0; i < n; ++i) {
       local.vars[fn.lambda->items[i + 1]->text] = args.positional[i];
@@ -242,9 +238,10 @@ Value Evaluator::callUser(const UserFunction& fn, const CallArguments& args, con
       } else if (starIndex >= 0) {
         extra.push_back(args.positional[i]);
       } else {
-        raise(at, "LANG_ARGS",
-              name + "() takes " + std::to_string(regular) + " positional arguments but " +
-                  std::to_string(args.positional.size()) + " were given");
+        raise(at, "LANG_ARGS.15",
+              {{"name", name},
+               {"regular", std::to_string(regular)},
+               {"positional_count", std::to_string(args.positional.size())}});
       }
     }
     if (starIndex >= 0) {
@@ -264,9 +261,8 @@ Value Evaluator::callUser(const UserFunction& fn, const CallArguments& args, con
         for (const auto& p : params) {
           names.push_back(p.name);
         }
-        Diagnostic d =
-            Diagnostic::fatal("LANG_ARGS", name + "() got an unexpected keyword argument '" + kw.name + "'",
-                              kw.location.known() ? kw.location : location(at));
+        Diagnostic d = msg::make("LANG_ARGS.6", {{"name", name}, {"name_2", kw.name}},
+                                 kw.location.known() ? kw.location : location(at));
         std::string note = suggestionNote(kw.name, names);
         if (!note.empty()) {
           d.withNote(note);
@@ -275,7 +271,7 @@ Value Evaluator::callUser(const UserFunction& fn, const CallArguments& args, con
       }
       auto index = static_cast<std::size_t>(it - params.begin());
       if (bound[index]) {
-        raise(at, "LANG_ARGS", name + "() got multiple values for argument '" + kw.name + "'");
+        raise(at, "LANG_ARGS.16", {{"name", name}, {"name_2", kw.name}});
       }
       local.vars[kw.name] = *kw.value;
       bound[index] = true;
@@ -287,7 +283,7 @@ Value Evaluator::callUser(const UserFunction& fn, const CallArguments& args, con
     for (std::size_t i = 0; i < params.size(); ++i) {
       if (!bound[i]) {
         if (!fn.hasDefault[i]) {
-          raise(at, "LANG_ARGS", name + "() missing required argument '" + params[i].name + "'");
+          raise(at, "LANG_ARGS.17", {{"name", name}, {"name_2", params[i].name}});
         }
         local.vars[params[i].name] = fn.defaults[i];
       }

@@ -109,7 +109,7 @@ Value Evaluator::eval(const Expr& e) {
   case ExprKind::Lambda:
     return evalLambda(e);
   default:
-    raise(e.pos, "LANG_TYPE", "this expression cannot be evaluated here");
+    raise(e.pos, "LANG_TYPE.31", {});
   }
 }
 
@@ -148,8 +148,7 @@ Value Evaluator::evalName(const Expr& e) {
     return it->second;
   }
   if (found->isConcept() && found->asConcept()->destroyed) {
-    raise(e.pos, "LANG_DESTROYED", "concept '" + e.text + "' was destroyed (by DETRUIRE) and cannot be used",
-          "assign it again with a command before using it");
+    raise(e.pos, "LANG_DESTROYED.2", {{"text", e.text}});
   }
   return *found;
 }
@@ -180,7 +179,7 @@ void Evaluator::unknownName(const Expr& e) const {
   if (note.empty() && mathNames().contains(e.text) && lookup_ == nullptr) {
     note = "'" + e.text + "' is in the math module: add 'from math import " + e.text + "' (or 'import math')";
   }
-  raise(e.pos, "LANG_NAME", "name '" + e.text + "' is not defined", note);
+  raise(e.pos, "LANG_NAME", {{"text", e.text}}, note);
 }
 
 Value Evaluator::evalCompare(const Expr& e) {
@@ -211,7 +210,7 @@ Value Evaluator::evalDict(const Expr& e) {
       } else {
         Value other = eval(*e.items[i + 1]);
         if (!other.isDict()) {
-          langError("LANG_TYPE", "'**' in a dict needs a dict, not '" + other.typeName() + "'");
+          langError("LANG_TYPE.9", {{"type_name", other.typeName()}});
         }
         for (const auto& [k, v] : other.asDict()->items) {
           dictSet(*dict, k, v);
@@ -234,7 +233,7 @@ Value Evaluator::evalListComp(const Expr& e) {
   std::function<void(std::size_t)> run = [&](std::size_t clause) {
     if (clause >= e.items.size()) {
       if (static_cast<std::int64_t>(out.size()) >= options_.limits.maxSequenceLength) {
-        raise(e.pos, "LANG_SIZE", "list too long");
+        raise(e.pos, "LANG_SIZE.6", {});
       }
       out.push_back(eval(*e.items[0]));
       if (out.size() == out.capacity()) {
@@ -291,7 +290,7 @@ Value Evaluator::evalFString(const Expr& e) {
       raise(part->pos, err);
     }
     if (static_cast<std::int64_t>(out.size()) > options_.limits.maxStringLength) {
-      raise(e.pos, "LANG_SIZE", "string too long");
+      raise(e.pos, "LANG_SIZE.4", {});
     }
   }
   return Value(std::move(out));
@@ -305,10 +304,10 @@ Value Evaluator::evalAttribute(const Expr& e) {
 Value Evaluator::attributeOf(const Value& object, const std::string& name, const Pos& at) {
   if (object.isConcept()) {
     if (object.asConcept()->destroyed) {
-      raise(at, "LANG_DESTROYED", "concept '" + object.asConcept()->name + "' was destroyed (by DETRUIRE)");
+      raise(at, "LANG_DESTROYED.3", {{"name", object.asConcept()->name}});
     }
     if (handler_ == nullptr) {
-      raise(at, "LANG_ATTR", "concept attributes are not available here");
+      raise(at, "LANG_ATTR.2", {});
     }
     return handler_->conceptAttribute(object.asConcept(), name, location(at));
   }
@@ -335,7 +334,7 @@ Value Evaluator::attributeOf(const Value& object, const std::string& name, const
       return *callMethod(*ev, self, method, args, pos);
     });
   }
-  raise(at, "LANG_ATTR", "'" + object.typeName() + "' object has no attribute '" + name + "'");
+  raise(at, "LANG_ATTR.3", {{"type_name", object.typeName()}, {"name", name}});
 }
 
 } // namespace stella

@@ -45,9 +45,7 @@ public:
     for (const auto& n : offered) {
       list += (list.empty() ? "" : ", ") + n;
     }
-    langError("LANG_IMPORT", module + "." + name + " is not available in stella's sandbox",
-              "command files cannot reach the file system, the environment or processes; " + module +
-                  " offers " + list);
+    langError("LANG_IMPORT", {{"module", module}, {"name", name}, {"list", list}});
   }
 
 private:
@@ -106,7 +104,7 @@ void Evaluator::execImport(const Stmt& s) {
       bindName(bound,
                Value(std::shared_ptr<NativeObject>(std::make_shared<ModuleObject>(in.name, &globals_))));
     } else {
-      raise(in.pos, "LANG_IMPORT", "import of module '" + in.name + "' is refused", importNote);
+      raise(in.pos, "LANG_IMPORT.2", {{"name", in.name}}, importNote);
     }
   }
 }
@@ -125,7 +123,7 @@ void Evaluator::execFromImport(const Stmt& s) {
     return;
   }
   if (s.name != "math" && s.name != "os" && s.name != "os.path") {
-    raise(modulePos, "LANG_IMPORT", "import from module '" + s.name + "' is refused", importNote);
+    raise(modulePos, "LANG_IMPORT.3", {{"name", s.name}}, importNote);
   }
   const auto& names = s.name == "math" ? mathNames() : (s.name == "os" ? osNames() : osPathNames());
   for (std::size_t i = 1; i < s.imports.size(); ++i) {
@@ -149,8 +147,7 @@ void Evaluator::execFromImport(const Stmt& s) {
       for (const auto& [name, value] : names) {
         candidates.push_back(name);
       }
-      raise(in.pos, "LANG_IMPORT", "module 'math' has no name '" + in.name + "'",
-            suggestionNote(in.name, candidates));
+      raise(in.pos, "LANG_IMPORT.4", {{"name", in.name}}, suggestionNote(in.name, candidates));
     }
     bindName(in.alias.empty() ? in.name : in.alias, it->second);
   }

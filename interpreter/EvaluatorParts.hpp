@@ -59,9 +59,7 @@ public:
   DepthGuard(int& depth, int max, const Evaluator& ev, const Pos& pos) : depth_(depth) {
     if (++depth_ > max) {
       --depth_;
-      ev.raise(pos, "LANG_DEPTH",
-               "evaluation nested too deeply (more than " + std::to_string(max) + " levels)",
-               "is a function calling itself without end?");
+      ev.raise(pos, "LANG_DEPTH.3", {{"max", std::to_string(max)}});
     }
   }
   ~DepthGuard() { --depth_; }

@@ -93,11 +93,11 @@ Evaluator::Flow Evaluator::execStatementOfKind(const Stmt& s) {
     execRaise(s);
   case StmtKind::Assert:
     if (!eval(*s.exprs[0]).truthy()) {
-      std::string message = "assertion failed: " + formatExpression(*s.exprs[0]);
       if (s.exprs.size() > 1) {
-        message += " (" + eval(*s.exprs[1]).str() + ")";
+        raise(s.pos, "LANG_ASSERT.detail",
+              {{"expression", formatExpression(*s.exprs[0])}, {"detail", eval(*s.exprs[1]).str()}});
       }
-      raise(s.pos, "LANG_ASSERT", message);
+      raise(s.pos, "LANG_ASSERT", {{"expression", formatExpression(*s.exprs[0])}});
     }
     return Flow::Normal;
   }
@@ -169,8 +169,7 @@ void Evaluator::assignTo(const Expr& target, const Value& value) {
     return;
   }
   case ExprKind::Attribute:
-    raise(target.pos, "LANG_TYPE", "cannot set the attribute '" + target.text + "'",
-          "attributes of concepts and objects are read-only in command files");
+    raise(target.pos, "LANG_TYPE.32", {{"text", target.text}});
   case ExprKind::Tuple:
   case ExprKind::List: {
     ValueList items;
@@ -180,15 +179,13 @@ void Evaluator::assignTo(const Expr& target, const Value& value) {
       if (e.id == "LANG_BUDGET") {
         raise(target.pos, e);
       }
-      raise(target.pos, "LANG_TYPE",
-            "cannot unpack a '" + value.typeName() + "' into " + std::to_string(target.items.size()) +
-                " names");
+      raise(target.pos, "LANG_TYPE.33",
+            {{"type_name", value.typeName()}, {"items_count", std::to_string(target.items.size())}});
     }
     if (items.size() != target.items.size()) {
-      raise(target.pos, "LANG_VALUE",
-            "cannot unpack " + std::to_string(items.size()) + " values into " +
-                std::to_string(target.items.size()) + " names",
-            "the number of names on the left of '=' must match the number of values");
+      raise(target.pos, "LANG_VALUE.35",
+            {{"items_count", std::to_string(items.size())},
+             {"items_count_2", std::to_string(target.items.size())}});
     }
     for (std::size_t i = 0; i < items.size(); ++i) {
       assignTo(*target.items[i], items[i]);
@@ -196,7 +193,7 @@ void Evaluator::assignTo(const Expr& target, const Value& value) {
     return;
   }
   default:
-    raise(target.pos, "LANG_TYPE", "cannot assign to this expression");
+    raise(target.pos, "LANG_TYPE.34", {});
   }
 }
 
@@ -224,7 +221,7 @@ void Evaluator::execAugAssign(const Stmt& s) {
       ValueList more = iterableItems(rhs, options_.limits);
       auto& items = current.asList()->items;
       if (static_cast<std::int64_t>(items.size() + more.size()) > options_.limits.maxSequenceLength) {
-        langError("LANG_SIZE", "list too long");
+        langError("LANG_SIZE.6", {});
       }
       items.insert(items.end(), more.begin(), more.end());
     } catch (const LangError& e) {
@@ -278,9 +275,8 @@ Evaluator::Flow Evaluator::execWhile(const Stmt& s) {
     running.turn();
     if (++iterations > options_.whileIterationCap) {
       raise(s.pos, "LANG_WHILE",
-            "while loop stopped after " + std::to_string(options_.whileIterationCap) +
-                " iterations: its condition '" + formatExpression(*s.exprs[0]) + "' was still true",
-            "check that the loop changes what its condition tests");
+            {{"while_iteration_cap", std::to_string(options_.whileIterationCap)},
+             {"format_expression", formatExpression(*s.exprs[0])}});
     }
     countStep(s.pos);
     Flow flow = execBlock(s.body);
@@ -315,14 +311,14 @@ void Evaluator::execDel(const Stmt& s) {
     } else if (t->kind == ExprKind::Tuple || t->kind == ExprKind::List) {
       for (const auto& item : t->items) {
         if (item->kind != ExprKind::Name) {
-          raise(item->pos, "LANG_TYPE", "del of this expression is not supported");
+          raise(item->pos, "LANG_TYPE.35", {});
         }
         if (globals_.erase(item->text) == 0 && (scope_ == nullptr || scope_->vars.erase(item->text) == 0)) {
           unknownName(*item);
         }
       }
     } else {
-      raise(t->pos, "LANG_TYPE", "cannot delete this expression");
+      raise(t->pos, "LANG_TYPE.36", {});
     }
   }
 }

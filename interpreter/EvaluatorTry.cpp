@@ -4,6 +4,7 @@
 #include "EvaluatorParts.hpp"
 
 #include "Exceptions.hpp"
+#include "messages/Messages.hpp"
 
 namespace stella {
 
@@ -22,25 +23,23 @@ bool typeMatches(const Evaluator& ev, const Value& type, const ExceptionObject& 
   const auto* cls =
       type.isCallable() ? dynamic_cast<const ExceptionClass*>(type.asCallable().get()) : nullptr;
   if (cls == nullptr) {
-    ev.raise(at, "LANG_TYPE", "'except' names '" + type.repr() + "', which is not an exception class",
-             "name an error class (Exception, ValueError, KeyError, AsterError...) or a tuple of them");
+    ev.raise(at, "LANG_TYPE.39", {{"repr", type.repr()}});
   }
   return exception.exceptionClass().isSubclassOf(*cls);
 }
 
-const char* const uncaughtNote = "an 'except' does not catch errors of commands";
-
-// An error of a command passing through a `try`: says why its `except` did not catch it.
+// An error of a command passing through a `try`: says why its `except` did not catch it (once,
+// at the innermost `try`: the note starts with the text of LANG_TRY.mark).
 TracedError explainUncaught(const UserError& error, const Pos& tryPos) {
   std::vector<Diagnostic> ds = error.diagnostics();
+  const std::string mark = msg::text("LANG_TRY.mark");
+  const std::string uncaught = msg::text("LANG_TRY.uncaught", {{"mark", mark}, {"line", tryPos.line}});
   for (const auto& note : ds.front().notes) {
-    if (note.rfind(uncaughtNote, 0) == 0) {
+    if (note.rfind(mark, 0) == 0) {
       return TracedError(error, true, nullptr);
     }
   }
-  ds.front().withNote(
-      std::string(uncaughtNote) + " (the 'try' at line " + std::to_string(tryPos.line) +
-      "): as with code_aster's default DEBUT(ERREUR=_F(ERREUR_F='ABORT')), they stop the study");
+  ds.front().withNote(uncaught);
   return TracedError(UserError(std::move(ds)), true, nullptr);
 }
 
@@ -125,8 +124,7 @@ Evaluator::Flow Evaluator::handleError(const Stmt& s, const UserError& error) {
 void Evaluator::execRaise(const Stmt& s) {
   if (s.exprs.empty()) {
     if (handling_.empty()) {
-      raise(s.pos, "LANG_RAISE", "RuntimeError: no active exception to re-raise",
-            "a 'raise' alone is written inside an 'except' clause");
+      raise(s.pos, "LANG_RAISE", {});
     }
     std::rethrow_exception(handling_.back());
   }
@@ -141,15 +139,15 @@ void Evaluator::execRaise(const Stmt& s) {
     exception = std::dynamic_pointer_cast<const ExceptionObject>(v.asNative());
   }
   if (exception == nullptr) {
-    raise(e.pos, "LANG_TYPE", "exceptions must derive from Exception, found '" + v.typeName() + "'",
-          "raise an error class or instance: `raise ValueError('...')`");
+    raise(e.pos, "LANG_TYPE.40", {{"type_name", v.typeName()}});
   }
-  std::string text = exception->exceptionClass().name();
-  std::string message = exception->strText();
-  if (!message.empty()) {
-    text += ": " + message;
-  }
-  throw TracedError(UserError(Diagnostic::fatal("LANG_RAISE", text, location(s.pos))), false, exception);
+  const std::string message = exception->strText();
+  const std::string name = exception->exceptionClass().name();
+  throw TracedError(UserError(message.empty()
+                                  ? msg::make("LANG_RAISE.class", {{"name", name}}, location(s.pos))
+                                  : msg::make("LANG_RAISE.class_message",
+                                              {{"name", name}, {"message", message}}, location(s.pos))),
+                    false, exception);
 }
 
 } // namespace stella

@@ -14,8 +14,7 @@ ExceptionClass::ExceptionClass(std::string name, const ExceptionClass* parent)
     : NativeCallable(name,
                      [this, name](const CallArguments& a) -> Value {
                        if (!a.keywords.empty()) {
-                         langError("LANG_ARGS", name + "() takes no keyword arguments, found '" +
-                                                    a.keywords[0].name + "'");
+                         langError("LANG_ARGS.9", {{"name", name}, {"name_2", a.keywords[0].name}});
                        }
                        // `this` lives as long as the class table, which outlives every call
                        auto self = findExceptionClass(this->name());

@@ -49,8 +49,7 @@ constexpr int maxWidth = 10000; // a field wider than this is refused
 
 void checkWidth(long width) {
   if (width > maxWidth) {
-    langError("LANG_VALUE",
-              "format width or precision too large (more than " + std::to_string(maxWidth) + ")");
+    langError("LANG_VALUE.5", {{"max_width", std::to_string(maxWidth)}});
   }
 }
 
@@ -82,7 +81,7 @@ std::string percentFormat(const std::string& format, const Value& args) {
   bool usedMapping = false;
   auto take = [&]() -> const Value& {
     if (next >= list->size()) {
-      langError("LANG_VALUE", "not enough arguments for the format string");
+      langError("LANG_VALUE.6", {});
     }
     return (*list)[next++];
   };
@@ -94,19 +93,18 @@ std::string percentFormat(const std::string& format, const Value& args) {
       continue;
     }
     if (++i >= format.size()) {
-      langError("LANG_VALUE", "incomplete format: '%' at the end of the string");
+      langError("LANG_VALUE.7", {});
     }
     const Value* mapped = nullptr;
     if (format[i] == '(') {
       std::size_t close = format.find(')', i);
       if (close == std::string::npos || mapping == nullptr) {
-        langError("LANG_VALUE", mapping == nullptr ? "format requires a mapping (a dict) for %(name)"
-                                                   : "incomplete format key");
+        langError(mapping == nullptr ? "LANG_VALUE.mapping" : "LANG_VALUE.format_key");
       }
       std::string key = format.substr(i + 1, close - i - 1);
       mapped = dictFind(*mapping, Value(key));
       if (mapped == nullptr) {
-        langError("LANG_KEY", "key '" + key + "' not found in the dict given to %");
+        langError("LANG_KEY.2", {{"key", key}});
       }
       usedMapping = true;
       i = close + 1;
@@ -140,7 +138,7 @@ std::string percentFormat(const std::string& format, const Value& args) {
       ++i;
     }
     if (i >= format.size()) {
-      langError("LANG_VALUE", "incomplete format");
+      langError("LANG_VALUE.8", {});
     }
     if (width.size() > 6 || precision.size() > 6) {
       checkWidth(maxWidth + 1);
@@ -160,8 +158,7 @@ std::string percentFormat(const std::string& format, const Value& args) {
     case 'i':
     case 'u': {
       if (!v.isNumber()) {
-        langError("LANG_TYPE",
-                  std::string("%") + type + " format: a number is required, not '" + v.typeName() + "'");
+        langError("LANG_TYPE.13", {{"type", type}, {"type_name", v.typeName()}});
       }
       long long n = isIntLike(v) ? v.asInt() : static_cast<long long>(toInt(v).asInt());
       out += printfInt(spec + "lld", n);
@@ -171,8 +168,7 @@ std::string percentFormat(const std::string& format, const Value& args) {
     case 'X':
     case 'o':
       if (!isIntLike(v)) {
-        langError("LANG_TYPE",
-                  std::string("%") + type + " format: an integer is required, not '" + v.typeName() + "'");
+        langError("LANG_TYPE.14", {{"type", type}, {"type_name", v.typeName()}});
       }
       out += printfInt(spec + "ll" + type, v.asInt());
       break;
@@ -183,8 +179,7 @@ std::string percentFormat(const std::string& format, const Value& args) {
     case 'g':
     case 'G':
       if (!v.isNumber()) {
-        langError("LANG_TYPE",
-                  std::string("%") + type + " format: a real number is required, not '" + v.typeName() + "'");
+        langError("LANG_TYPE.15", {{"type", type}, {"type_name", v.typeName()}});
       }
       out += printfNumber(spec + type, v.asReal());
       break;
@@ -204,17 +199,15 @@ std::string percentFormat(const std::string& format, const Value& args) {
       } else if (isIntLike(v) && v.asInt() >= 0 && v.asInt() < 128) {
         out += static_cast<char>(v.asInt());
       } else {
-        langError("LANG_TYPE", "%c requires a character");
+        langError("LANG_TYPE.16", {});
       }
       break;
     default:
-      langError("LANG_VALUE", std::string("unsupported format character '") + type + "'",
-                "use %d, %i, %f, %e, %g, %s, %r, %x, %o or %%");
+      langError("LANG_VALUE.9", {{"type", type}});
     }
   }
   if (!usedMapping && mapping == nullptr && next < list->size()) {
-    langError("LANG_VALUE", "not all arguments converted during string formatting",
-              "the format has fewer % fields than values were given");
+    langError("LANG_VALUE.10", {});
   }
   return out;
 }
@@ -277,7 +270,7 @@ FormatSpec parseSpec(const std::string& spec) {
       digits += spec[i++];
     }
     if (digits.empty() || digits.size() > 6) {
-      langError("LANG_VALUE", "invalid precision in format spec '" + spec + "'");
+      langError("LANG_VALUE.11", {{"spec", spec}});
     }
     f.precision = std::stol(digits);
     checkWidth(f.precision);
@@ -286,9 +279,7 @@ FormatSpec parseSpec(const std::string& spec) {
     f.type = spec[i++];
   }
   if (i != spec.size()) {
-    langError(
-        "LANG_VALUE", "invalid format spec '" + spec + "'",
-        "a format spec is [[fill]align][sign][0][width][,][.precision][type], e.g. '>10', '.3f', '12.5e'");
+    langError("LANG_VALUE.12", {{"spec", spec}});
   }
   return f;
 }
@@ -384,7 +375,7 @@ std::string formatInt(const FormatSpec& f, std::int64_t n) {
     sign.clear();
     break;
   default:
-    langError("LANG_VALUE", std::string("unknown format code '") + f.type + "' for an integer");
+    langError("LANG_VALUE.13", {{"type", f.type}});
   }
   if (f.grouping != 0) {
     body = group(body, f.grouping);
@@ -404,13 +395,12 @@ std::string formatWithSpec(const Value& value, const std::string& spec) {
   }
   if (value.isNumber()) {
     if (f.type != 0 && std::string_view("eEfFgG%").find(f.type) == std::string_view::npos) {
-      langError("LANG_VALUE", std::string("unknown format code '") + f.type + "' for a real number");
+      langError("LANG_VALUE.14", {{"type", f.type}});
     }
     return formatReal(f, value.asReal());
   }
   if (f.type != 0 && f.type != 's') {
-    langError("LANG_VALUE", std::string("unknown format code '") + f.type + "' for a value of type '" +
-                                value.typeName() + "'");
+    langError("LANG_VALUE.15", {{"type", f.type}, {"type_name", value.typeName()}});
   }
   std::string text = value.str();
   if (f.precision >= 0 && static_cast<std::size_t>(f.precision) < text.size()) {
@@ -431,7 +421,7 @@ std::string braceFormat(const std::string& format, const ValueList& positional,
         out += '}';
         continue;
       }
-      langError("LANG_VALUE", "single '}' in the format string", "write '}}' for a literal brace");
+      langError("LANG_VALUE.16", {});
     }
     if (c != '{') {
       out += c;
@@ -444,7 +434,7 @@ std::string braceFormat(const std::string& format, const ValueList& positional,
     }
     std::size_t close = format.find('}', i);
     if (close == std::string::npos) {
-      langError("LANG_VALUE", "'{' in the format string is not closed", "write '{{' for a literal brace");
+      langError("LANG_VALUE.17", {});
     }
     std::string field = format.substr(i + 1, close - i - 1);
     i = close;
@@ -465,13 +455,12 @@ std::string braceFormat(const std::string& format, const ValueList& positional,
       std::size_t index = autoIndex++;
       if (!field.empty()) {
         if (field.find_first_not_of("0123456789") != std::string::npos || field.size() > 6) {
-          langError("LANG_VALUE", "unsupported format field '{" + field + "}'");
+          langError("LANG_VALUE.18", {{"field", field}});
         }
         index = std::stoul(field);
       }
       if (index >= positional.size()) {
-        langError("LANG_INDEX", "format field {" + field + "} has no argument (" +
-                                    std::to_string(positional.size()) + " given)");
+        langError("LANG_INDEX", {{"field", field}, {"positional_count", std::to_string(positional.size())}});
       }
       v = &positional[index];
     } else {
@@ -481,7 +470,7 @@ std::string braceFormat(const std::string& format, const ValueList& positional,
         }
       }
       if (v == nullptr) {
-        langError("LANG_KEY", "format field '{" + field + "}' was not given as a keyword argument");
+        langError("LANG_KEY.3", {{"field", field}});
       }
     }
     Value shown = *v;
@@ -490,7 +479,7 @@ std::string braceFormat(const std::string& format, const ValueList& positional,
     } else if (conversion == 's') {
       shown = Value(v->str());
     } else if (conversion != 0) {
-      langError("LANG_VALUE", "unknown conversion in the format field (use !r or !s)");
+      langError("LANG_VALUE.19", {});
     }
     out += formatWithSpec(shown, spec);
   }
@@ -516,7 +505,7 @@ Value toInt(const Value& v) {
   if (v.isReal()) {
     double d = std::trunc(v.asReal());
     if (!std::isfinite(d) || d >= 9.2e18 || d <= -9.2e18) {
-      langError("LANG_VALUE", "cannot convert " + v.repr() + " to an integer");
+      langError("LANG_VALUE.20", {{"repr", v.repr()}});
     }
     return Value(static_cast<std::int64_t>(d));
   }
@@ -535,11 +524,11 @@ Value toInt(const Value& v) {
     }
     auto [ptr, ec] = std::from_chars(begin, digits.data() + digits.size(), n);
     if (ec != std::errc() || ptr != digits.data() + digits.size() || digits.empty()) {
-      langError("LANG_VALUE", "invalid literal for int(): " + v.repr());
+      langError("LANG_VALUE.21", {{"repr", v.repr()}});
     }
     return Value(n);
   }
-  langError("LANG_TYPE", "int() argument must be a string or a number, not '" + v.typeName() + "'");
+  langError("LANG_TYPE.17", {{"type_name", v.typeName()}});
 }
 
 Value toFloat(const Value& v) {
@@ -569,7 +558,7 @@ Value toFloat(const Value& v) {
     auto [ptr, ec] = std::from_chars(body.data(), body.data() + body.size(), d);
     if (body.empty() || ptr != body.data() + body.size() ||
         (ec != std::errc() && ec != std::errc::result_out_of_range)) {
-      langError("LANG_VALUE", "could not convert string to float: " + v.repr());
+      langError("LANG_VALUE.22", {{"repr", v.repr()}});
     }
     if (ec == std::errc::result_out_of_range) { // Python: '1e400' is inf, '1e-400' is 0.0
       const std::size_t e = body.find_first_of("eE");
@@ -578,12 +567,12 @@ Value toFloat(const Value& v) {
     }
     return Value(negative ? -d : d);
   }
-  langError("LANG_TYPE", "float() argument must be a string or a number, not '" + v.typeName() + "'");
+  langError("LANG_TYPE.18", {{"type_name", v.typeName()}});
 }
 
 double toReal(const Value& v, const char* what) {
   if (!v.isNumber()) {
-    langError("LANG_TYPE", std::string(what) + " must be a number, not '" + v.typeName() + "'");
+    langError("LANG_TYPE.19", {{"what", std::string(what)}, {"type_name", v.typeName()}});
   }
   return v.asReal();
 }

@@ -4,6 +4,7 @@
 
 #include "Evaluator.hpp"
 #include "Parser.hpp"
+#include "messages/Messages.hpp"
 
 #include <new>
 
@@ -58,9 +59,8 @@ std::optional<Value> Interpreter::global(const std::string& name) const {
 namespace {
 
 Diagnostic abortDiagnostic(const std::string& message) {
-  Diagnostic d = Diagnostic::fatal("INTERNAL", message);
+  Diagnostic d = msg::make("INTERNAL", {{"message", message}});
   d.kind = FailureKind::Abort;
-  d.withNote("this is a bug in stella, not in the command file; please report it with the command file");
   return d;
 }
 
@@ -93,20 +93,16 @@ RunStatus Interpreter::run(const std::shared_ptr<const SourceFile>& file) {
     impl_->sink.report(abortDiagnostic(e.what()));
     return RunStatus::Failed;
   } catch (const std::bad_alloc&) {
-    impl_->sink.report(
-        Diagnostic::fatal("LANG_MEMORY", "out of memory while running the command file")
-            .withNote("the run's memory is spent: raise P memory_limit in the export (when it sets one), "
-                      "or make the values of the command file smaller"));
+    impl_->sink.report(msg::make("LANG_MEMORY"));
     return RunStatus::Failed;
   } catch (const std::exception& e) {
-    impl_->sink.report(abortDiagnostic(std::string("unexpected failure: ") + e.what()));
+    impl_->sink.report(abortDiagnostic(msg::text("INTERNAL.unexpected", {{"what", e.what()}})));
     return RunStatus::Failed;
   }
   if (impl_->handler.finished()) {
     return RunStatus::Finished;
   }
-  impl_->sink.report(Diagnostic::alarm("LANG_FIN", "the command file ends without FIN()", endOfFile(file))
-                         .withNote("end a study with FIN() so that its results are closed properly"));
+  impl_->sink.report(msg::make("LANG_FIN", {}, endOfFile(file)));
   return RunStatus::Completed;
 }
 

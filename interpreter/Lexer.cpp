@@ -30,8 +30,7 @@ void Lexer::checkEncoding() {
     if (encodingNamed(declaration->name) == SourceEncoding::Unknown) {
       Pos at{declaration->line, static_cast<int>(declaration->column),
              static_cast<int>(declaration->name.size())};
-      error("SYNTAX_ENCODING", "unknown encoding '" + declaration->name + "'", at,
-            "the coding line may name utf-8, latin-1 (iso-8859-1), iso-8859-15 or cp1252");
+      error("SYNTAX_ENCODING", {{"name", declaration->name}}, at);
       return;
     }
   }
@@ -46,11 +45,11 @@ void Lexer::checkEncoding() {
       1 + static_cast<int>(*bad - first), 1};
   char byte[8];
   std::snprintf(byte, sizeof(byte), "0x%02X", static_cast<unsigned char>(src_[*bad]));
-  error("SYNTAX_ENCODING",
-        std::string("the byte ") + byte +
-            (declaration ? " is not UTF-8, the encoding its coding line declares"
-                         : " is not UTF-8 and no coding line declares the file's encoding"),
-        at, "save the file in UTF-8, or declare its encoding on line 1 or 2: # -*- coding: latin-1 -*-");
+  error("SYNTAX_ENCODING.2",
+        {{"byte", byte},
+         {"value", (declaration ? " is not UTF-8, the encoding its coding line declares"
+                                : " is not UTF-8 and no coding line declares the file's encoding")}},
+        at);
 }
 
 Lexer::Lexer(std::shared_ptr<const SourceFile> file, std::string_view text, int firstLine, int firstColumn)
@@ -61,12 +60,8 @@ SourceLocation Lexer::location(const Pos& pos) const {
   return SourceLocation{file_, pos.line, pos.column, pos.length};
 }
 
-void Lexer::error(const std::string& id, const std::string& message, Pos at, const std::string& note) {
-  Diagnostic d = Diagnostic::syntax(id, message, location(at));
-  if (!note.empty()) {
-    d.withNote(note);
-  }
-  errors_.push_back(std::move(d));
+void Lexer::error(std::string_view key, msg::Args args, Pos at) {
+  errors_.push_back(msg::make(key, args, location(at)));
 }
 
 Pos Lexer::posOf(std::size_t begin, std::size_t end) const {
@@ -152,11 +147,9 @@ void Lexer::startLine() {
     bool prefixOfTop = top.compare(0, ws.size(), ws) == 0;
     if (!consistent) {
       if (prefixOfTop) {
-        error("SYNTAX_4", "unindent does not match any outer indentation level", indentPos_,
-              "indent this line like one of the blocks that contain it");
+        error("SYNTAX_4", {}, indentPos_);
       } else {
-        error("SYNTAX_5", "inconsistent use of tabs and spaces in indentation", indentPos_,
-              "indent with spaces only: tabs mixed with spaces are refused because their width is ambiguous");
+        error("SYNTAX_5", {}, indentPos_);
         return; // read the line as if it were at the current level
       }
     }
@@ -217,8 +210,7 @@ Token Lexer::nextToken() {
       }
       if (!brackets_.empty() && !finished_) {
         const Bracket& b = brackets_.back();
-        error("SYNTAX_8", std::string("'") + b.open + "' was never closed", b.pos,
-              "add the matching closing bracket");
+        error("SYNTAX_8", {{"open", b.open}}, b.pos);
       }
       finished_ = true;
       Token t;
@@ -256,8 +248,7 @@ Token Lexer::nextToken() {
         at_ = k;
         continue;
       }
-      error("SYNTAX_17", "a backslash outside a string must end the line (line continuation)",
-            posOf(at_, at_ + 1));
+      error("SYNTAX_17", {}, posOf(at_, at_ + 1));
       ++at_;
       continue;
     }
@@ -269,8 +260,7 @@ Token Lexer::nextToken() {
         // `C = [1, 2` then `D = 4` at column 1: the bracket was never closed; report it and read on
         const Bracket& b = brackets_.front();
         if (unterminatedStringLine_ != line_ - 1) { // else the unterminated string explains it
-          error("SYNTAX_8", std::string("'") + b.open + "' was never closed", b.pos,
-                "add the matching closing bracket before line " + std::to_string(line_));
+          error("SYNTAX_8.2", {{"open", b.open}, {"line", std::to_string(line_)}}, b.pos);
         }
         brackets_.clear();
         atLogicalLineStart_ = true;

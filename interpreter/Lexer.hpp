@@ -5,6 +5,7 @@
 
 #include "Diagnostics.hpp"
 #include "Token.hpp"
+#include "messages/Messages.hpp"
 
 #include <memory>
 #include <string>
@@ -46,7 +47,8 @@ private:
   Token lexNumber();
   Token lexString(std::size_t prefixLength, bool raw, bool fString);
   Token lexOperator();
-  void error(const std::string& id, const std::string& message, Pos at, const std::string& note = {});
+  // Records catalogue entry `key` (messages/language.msg) with `args`, at `at`.
+  void error(std::string_view key, msg::Args args, Pos at);
   void checkEncoding();
   int column(std::size_t offset) const { return static_cast<int>(offset - lineStart_) + firstColumn_; }
   Pos posOf(std::size_t begin, std::size_t end) const;

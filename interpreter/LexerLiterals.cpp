@@ -89,8 +89,7 @@ Token Lexer::lexNumber() {
   }
   Token t = makeToken(TokenKind::Int, begin, at_);
   if (bad) {
-    error("SYNTAX_9", "invalid number literal '" + std::string(t.text) + "'", t.pos,
-          "numbers are written like 1, 1., .5, 2.1e5, 1.E-6");
+    error("SYNTAX_9", {{"text", std::string(t.text)}}, t.pos);
     t.kind = TokenKind::Int;
     return t;
   }
@@ -111,8 +110,7 @@ Token Lexer::lexNumber() {
   }
   auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), t.intValue, base);
   if (ec != std::errc() || ptr != digits.data() + digits.size()) {
-    error("SYNTAX_9", "integer literal '" + std::string(t.text) + "' is too large", t.pos,
-          "integers are limited to 64 bits; write it as a real number (e.g. 1.e20)");
+    error("SYNTAX_9.2", {{"text", std::string(t.text)}}, t.pos);
   }
   return t;
 }
@@ -166,10 +164,7 @@ Token Lexer::lexString(std::size_t prefixLength, bool raw, bool fString) {
   t.pos = startPos;
   if (contentEnd == std::string_view::npos) {
     unterminatedStringLine_ = line_;
-    error("SYNTAX_2", triple ? "unterminated triple-quoted string" : "unterminated string", startPos,
-          triple ? "close it with three quotes of the same kind"
-                 : "close the string with the same quote on the same line, or use triple quotes for several "
-                   "lines");
+    error(triple ? "SYNTAX_2.triple" : "SYNTAX_2", {}, startPos);
     at_ = i;
     t.text = src_.substr(begin, at_ - begin);
     t.pos.length = 1;
@@ -186,7 +181,7 @@ Token Lexer::lexString(std::size_t prefixLength, bool raw, bool fString) {
   if (!fString) {
     t.value = raw ? std::string(body) : decodeEscapes(body);
   } else {
-    t.value = raw ? "r" : "";
+    t.value = raw ? std::string("r") : std::string(); // (GCC 12 -Wrestrict false positive on a const char*)
   }
   return t;
 }

@@ -16,8 +16,7 @@ Token Lexer::lexOperator() {
       at_ += op.text.size();
       Token t = makeToken(op.kind, begin, at_);
       if (op.kind == TokenKind::Error) {
-        error("SYNTAX_3", "operator '" + std::string(op.text) + "' is not part of the command language",
-              t.pos);
+        error("SYNTAX_3", {{"text", std::string(op.text)}}, t.pos);
         return t;
       }
       char c = op.text[0];
@@ -27,9 +26,10 @@ Token Lexer::lexOperator() {
         char open = c == ')' ? '(' : (c == ']' ? '[' : '{');
         if (!brackets_.empty()) {
           if (brackets_.back().open != open) {
-            error("SYNTAX_8",
-                  std::string("closing '") + c + "' does not match the '" + brackets_.back().open +
-                      "' opened at line " + std::to_string(brackets_.back().pos.line),
+            error("SYNTAX_8.3",
+                  {{"c", c},
+                   {"open", brackets_.back().open},
+                   {"line", std::to_string(brackets_.back().pos.line)}},
                   t.pos);
           }
           brackets_.pop_back();
@@ -44,7 +44,7 @@ Token Lexer::lexOperator() {
   std::string shown = (static_cast<unsigned char>(t.text[0]) < 0x20)
                           ? "\\x" + std::to_string(static_cast<int>(t.text[0]))
                           : std::string(t.text);
-  error("SYNTAX_3", "invalid character '" + shown + "'", t.pos);
+  error("SYNTAX_3.2", {{"shown", shown}}, t.pos);
   return t;
 }
 

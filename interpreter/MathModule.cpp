@@ -13,8 +13,7 @@ namespace {
 using builtins::arity;
 
 [[noreturn]] void domainError(const char* fn, double x) {
-  langError("LANG_VALUE",
-            std::string("math domain error: ") + fn + "(" + Value(x).repr() + ") is not defined");
+  langError("LANG_VALUE.23", {{"fn", fn}, {"repr", Value(x).repr()}});
 }
 
 double realArgument(const CallArguments& a, std::size_t i) {
@@ -31,7 +30,7 @@ Value unaryMath(const char* name, double (*fn)(double), bool (*valid)(double)) {
     }
     double r = fn(x);
     if (std::isinf(r) && std::isfinite(x)) {
-      langError("LANG_VALUE", "math range error: " + n + "(" + Value(x).repr() + ") is too large");
+      langError("LANG_VALUE.24", {{"n", n}, {"repr", Value(x).repr()}});
     }
     return Value(r);
   });
@@ -44,17 +43,14 @@ Value binaryMath(const char* name, double (*fn)(double, double)) {
     double x = realArgument(a, 0);
     double y = realArgument(a, 1);
     if (n == "pow" && ((x < 0.0 && y != std::floor(y)) || (x == 0.0 && y < 0.0))) {
-      langError("LANG_VALUE", "math domain error: pow(" + Value(x).repr() + ", " + Value(y).repr() + ")");
+      langError("LANG_VALUE.25", {{"repr", Value(x).repr()}, {"repr_2", Value(y).repr()}});
     }
     if (n == "fmod" && y == 0.0) {
-      langError("LANG_VALUE", "math domain error: fmod(x, 0)");
+      langError("LANG_VALUE.26", {});
     }
     double r = fn(x, y);
     if (std::isinf(r) && std::isfinite(x) && std::isfinite(y)) {
-      langError("LANG_OVERFLOW",
-                "math range error: " + n + "(" + Value(x).repr() + ", " + Value(y).repr() +
-                    ") is larger than the largest float (about 1.8e308)",
-                "Python raises OverflowError here");
+      langError("LANG_OVERFLOW.2", {{"n", n}, {"repr", Value(x).repr()}, {"repr_2", Value(y).repr()}});
     }
     return Value(r);
   });
@@ -69,7 +65,7 @@ Value roundingMath(const char* name, double (*fn)(double)) {
     }
     double r = fn(realArgument(a, 0));
     if (!std::isfinite(r) || std::fabs(r) > 9.2e18) {
-      langError("LANG_VALUE", "cannot convert " + Value(r).repr() + " to an integer");
+      langError("LANG_VALUE.20", {{"repr", Value(r).repr()}});
     }
     return Value(static_cast<std::int64_t>(r));
   });

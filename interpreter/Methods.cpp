@@ -28,20 +28,21 @@ void arity(const CallArguments& a, const std::string& name, std::size_t min, std
   if (a.positional.size() < min || a.positional.size() > max) {
     std::string expected =
         min == max ? std::to_string(min) : std::to_string(min) + " to " + std::to_string(max);
-    langError("LANG_ARGS", name + "() takes " + expected + " arguments but " +
-                               std::to_string(a.positional.size()) + " were given");
+    langError(
+        "LANG_ARGS.11",
+        {{"name", name}, {"expected", expected}, {"positional_count", std::to_string(a.positional.size())}});
   }
 }
 
 void noKeywords(const CallArguments& a, const std::string& name) {
   if (!a.keywords.empty()) {
-    langError("LANG_ARGS", name + "() got an unexpected keyword argument '" + a.keywords[0].name + "'");
+    langError("LANG_ARGS.6", {{"name", name}, {"name_2", a.keywords[0].name}});
   }
 }
 
 const std::string& stringArg(const CallArguments& a, std::size_t i, const std::string& name) {
   if (!a.positional[i].isString()) {
-    langError("LANG_TYPE", name + "() needs a string argument, not '" + a.positional[i].typeName() + "'");
+    langError("LANG_TYPE.26", {{"name", name}, {"type_name", a.positional[i].typeName()}});
   }
   return a.positional[i].asString();
 }
@@ -99,7 +100,7 @@ Value split(const std::string& s, const CallArguments& a) {
   }
   const std::string& sep = stringArg(a, 0, "split");
   if (sep.empty()) {
-    langError("LANG_VALUE", "split() separator must not be empty");
+    langError("LANG_VALUE.30", {});
   }
   std::size_t start = 0;
   for (;;) {
@@ -120,8 +121,7 @@ Value join(Evaluator& ev, const std::string& sep, const CallArguments& a) {
   bool first = true;
   for (const Value& item : iterableItems(a.positional[0], ev.options().limits)) {
     if (!item.isString()) {
-      langError("LANG_TYPE", "join() needs strings, found '" + item.typeName() + "'",
-                "convert the items with str(...) first");
+      langError("LANG_TYPE.27", {{"type_name", item.typeName()}});
     }
     if (!first) {
       out += sep;
@@ -129,7 +129,7 @@ Value join(Evaluator& ev, const std::string& sep, const CallArguments& a) {
     first = false;
     out += item.asString();
     if (static_cast<std::int64_t>(out.size()) > ev.options().limits.maxStringLength) {
-      langError("LANG_SIZE", "string too long");
+      langError("LANG_SIZE.4", {});
     }
   }
   chargeAllocation(static_cast<std::int64_t>(out.size()));
@@ -141,13 +141,13 @@ std::string justify(const std::string& s, const CallArguments& a, const std::str
   arity(a, name, 1, 2);
   std::int64_t width = toIndex(a.positional[0], "width");
   if (width > limits.maxStringLength) {
-    langError("LANG_SIZE", "string too long");
+    langError("LANG_SIZE.4", {});
   }
   char fill = ' ';
   if (a.positional.size() == 2) {
     const std::string& f = stringArg(a, 1, name);
     if (f.size() != 1) {
-      langError("LANG_TYPE", name + "() fill character must be exactly one character");
+      langError("LANG_TYPE.28", {{"name", name}});
     }
     fill = f[0];
   }
@@ -258,7 +258,7 @@ Value stringMethod(Evaluator& ev, const std::string& s, const std::string& name,
       start = at + from.size();
       ++done;
       if (static_cast<std::int64_t>(out.size()) > ev.options().limits.maxStringLength) {
-        langError("LANG_SIZE", "string too long");
+        langError("LANG_SIZE.4", {});
       }
     }
     out.append(s, start);
@@ -273,7 +273,7 @@ Value stringMethod(Evaluator& ev, const std::string& s, const std::string& name,
     std::size_t at = name == "rfind" ? s.rfind(sub) : s.find(sub);
     if (at == std::string::npos) {
       if (name == "index") {
-        langError("LANG_VALUE", "substring " + Value(sub).repr() + " not found");
+        langError("LANG_VALUE.31", {{"repr", Value(sub).repr()}});
       }
       return Value(std::int64_t{-1});
     }
@@ -314,7 +314,7 @@ Value stringMethod(Evaluator& ev, const std::string& s, const std::string& name,
     });
     return Value(ok);
   }
-  langError("LANG_ATTR", "'str' object has no attribute '" + name + "'");
+  langError("LANG_ATTR", {{"name", name}});
 }
 
 std::size_t indexOf(const ValueList& items, const Value& x, const char* type) {
@@ -323,7 +323,7 @@ std::size_t indexOf(const ValueList& items, const Value& x, const char* type) {
       return i;
     }
   }
-  langError("LANG_VALUE", x.repr() + " is not in the " + type);
+  langError("LANG_VALUE.32", {{"repr", x.repr()}, {"type", type}});
 }
 
 Value listMethod(Evaluator& ev, const Value& self, const std::string& name, const CallArguments& a,
@@ -337,7 +337,7 @@ Value listMethod(Evaluator& ev, const Value& self, const std::string& name, cons
   if (name == "append") {
     arity(a, name, 1, 1);
     if (items.size() >= maxLength) {
-      langError("LANG_SIZE", "list too long");
+      langError("LANG_SIZE.6", {});
     }
     if (items.size() == items.capacity()) { // the list's storage is about to double
       chargeAllocation(static_cast<std::int64_t>(items.capacity() * sizeof(Value)));
@@ -349,7 +349,7 @@ Value listMethod(Evaluator& ev, const Value& self, const std::string& name, cons
     arity(a, name, 1, 1);
     ValueList more = iterableItems(a.positional[0], ev.options().limits);
     if (items.size() + more.size() > maxLength) {
-      langError("LANG_SIZE", "list too long");
+      langError("LANG_SIZE.6", {});
     }
     items.insert(items.end(), more.begin(), more.end());
     return Value();
@@ -366,7 +366,7 @@ Value listMethod(Evaluator& ev, const Value& self, const std::string& name, cons
   if (name == "pop") {
     arity(a, name, 0, 1);
     if (items.empty()) {
-      langError("LANG_INDEX", "pop from an empty list");
+      langError("LANG_INDEX.2", {});
     }
     std::size_t i = a.positional.empty()
                         ? items.size() - 1
@@ -378,7 +378,7 @@ Value listMethod(Evaluator& ev, const Value& self, const std::string& name, cons
   if (name == "insert") {
     arity(a, name, 2, 2);
     if (items.size() >= maxLength) {
-      langError("LANG_SIZE", "list too long");
+      langError("LANG_SIZE.6", {});
     }
     std::int64_t i = toIndex(a.positional[0], "insert index");
     auto n = static_cast<std::int64_t>(items.size());
@@ -439,12 +439,12 @@ Value dictMethod(Evaluator& ev, const Value& self, const std::string& name, cons
     if (a.positional.size() == 2) {
       return a.positional[1];
     }
-    langError("LANG_KEY", "key " + a.positional[0].repr() + " not found in the dict");
+    langError("LANG_KEY", {{"repr", a.positional[0].repr()}});
   }
   if (name == "update") {
     arity(a, name, 1, 1);
     if (!a.positional[0].isDict()) {
-      langError("LANG_TYPE", "update() needs a dict");
+      langError("LANG_TYPE.29", {});
     }
     for (const auto& [k, v] : a.positional[0].asDict()->items) {
       dictSet(dict, k, v);

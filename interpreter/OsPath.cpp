@@ -10,18 +10,19 @@ namespace {
 
 const std::string& stringArgument(const CallArguments& a, std::size_t i, const char* function) {
   if (i >= a.positional.size() || !a.positional[i].isString()) {
-    langError("LANG_TYPE",
-              std::string("os.path.") + function + "() expects a str argument" +
-                  (i < a.positional.size() ? ", found '" + a.positional[i].typeName() + "'" : ""));
+    langError("LANG_TYPE.8",
+              {{"function", function},
+               {"value", (i < a.positional.size() ? ", found '" + a.positional[i].typeName() + "'" : "")}});
   }
   return a.positional[i].asString();
 }
 
 void exactly(const CallArguments& a, std::size_t n, const char* function) {
   if (a.positional.size() != n || !a.keywords.empty()) {
-    langError("LANG_ARGS", std::string("os.path.") + function + "() takes " + std::to_string(n) +
-                               " positional argument" + (n == 1 ? "" : "s") + ", given " +
-                               std::to_string(a.positional.size() + a.keywords.size()));
+    langError("LANG_ARGS.7", {{"function", function},
+                              {"n", std::to_string(n)},
+                              {"value", (n == 1 ? "" : "s")},
+                              {"positional_count", std::to_string(a.positional.size() + a.keywords.size())}});
   }
 }
 
@@ -55,7 +56,7 @@ std::pair<std::string, std::string> splitExtension(const std::string& p) {
 
 Value join(const CallArguments& a) {
   if (a.positional.empty() || !a.keywords.empty()) {
-    langError("LANG_ARGS", "os.path.join() takes one or more positional str arguments");
+    langError("LANG_ARGS.8", {});
   }
   std::string path = stringArgument(a, 0, "join");
   for (std::size_t i = 1; i < a.positional.size(); ++i) {

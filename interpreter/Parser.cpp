@@ -18,8 +18,7 @@ ExprPtr Parser::finish(ExprPtr e) {
   }
   e->depth = depth + 1;
   if (e->depth > maxTreeDepth) {
-    failAt(e->pos, "expression too deeply nested (more than " + std::to_string(maxTreeDepth) + " levels)",
-           "SYNTAX_10", "split it into several assignments");
+    failAt(e->pos, "SYNTAX_10", {{"max_tree_depth", std::to_string(maxTreeDepth)}});
   }
   return e;
 }
@@ -42,7 +41,7 @@ void Parser::synchronize() {
 ExprPtr Parser::parseStandaloneExpression() {
   ExprPtr e = parseTestList();
   if (!at(TokenKind::EndOfFile)) {
-    fail("unexpected " + describeToken(cur_) + " after the expression");
+    fail("SYNTAX_1.3", {{"describe_token", describeToken(cur_)}});
   }
   return e;
 }

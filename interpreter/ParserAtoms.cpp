@@ -29,17 +29,14 @@ ExprPtr Parser::parseCall(ExprPtr callee) {
       ExprPtr value = parseTest();
       if (at(TokenKind::Assign)) {
         if (value->kind != ExprKind::Name) {
-          fail("a keyword argument's name must be a plain name", "SYNTAX_1",
-               "did you mean '==' (comparison) instead of '='?");
+          fail("SYNTAX_1.4", {});
         }
         advance();
         bool repeated = std::any_of(call->items.begin() + 1, call->items.end(), [&](const ExprPtr& a) {
           return a->kind == ExprKind::Keyword && a->text == value->text;
         });
         if (repeated) {
-          failAt(
-              value->pos, "keyword argument '" + value->text + "' repeated", "SYNTAX_14",
-              "give each keyword once; for several occurrences of a factor keyword use a tuple of _F(...)");
+          failAt(value->pos, "SYNTAX_14", {{"text", value->text}});
         }
         ExprPtr kw = node(ExprKind::Keyword, value->pos);
         kw->text = value->text;
@@ -50,8 +47,7 @@ ExprPtr Parser::parseCall(ExprPtr callee) {
         call->items.push_back(parseComprehension(std::move(value), pos));
       } else {
         if (sawKeyword) {
-          failAt(value->pos, "positional argument after a keyword argument", "SYNTAX_14",
-                 "put positional arguments first, or give this one a keyword");
+          failAt(value->pos, "SYNTAX_14.2", {});
         }
         call->items.push_back(std::move(value));
       }
@@ -61,14 +57,13 @@ ExprPtr Parser::parseCall(ExprPtr callee) {
     }
   }
   if (!at(TokenKind::RParen)) {
-    std::string note;
     if (cur_.pos.line != open.line) {
-      note = "the '(' at line " + std::to_string(open.line) + " column " + std::to_string(open.column) +
-             " is still open: is a ',' or a ')' missing?";
-    } else if (cur_.kind == TokenKind::Name || cur_.kind == TokenKind::String) {
-      note = "is a ',' missing before it?";
+      fail("SYNTAX_1.call_open",
+           {{"token", describeToken(cur_)}, {"line", open.line}, {"column", open.column}});
     }
-    fail("expected ',' or ')' in the call, found " + describeToken(cur_), "SYNTAX_1", note);
+    fail(cur_.kind == TokenKind::Name || cur_.kind == TokenKind::String ? "SYNTAX_1.call_comma"
+                                                                        : "SYNTAX_1.call",
+         {{"token", describeToken(cur_)}});
   }
   advance();
   return finish(std::move(call));
@@ -167,9 +162,9 @@ ExprPtr Parser::parseAtom() {
     return parseDictDisplay(pos);
   case TokenKind::Newline:
   case TokenKind::EndOfFile:
-    fail("expected an expression, found " + describeToken(cur_), "SYNTAX_1", "the statement is incomplete");
+    fail("SYNTAX_1.5", {{"describe_token", describeToken(cur_)}});
   default:
-    fail("expected an expression, found " + describeToken(cur_));
+    fail("SYNTAX_1.6", {{"describe_token", describeToken(cur_)}});
   }
 }
 
@@ -196,8 +191,8 @@ ExprPtr Parser::parseParenthesized(Pos open) {
     tuple->items.push_back(parseTest());
   }
   if (!at(TokenKind::RParen)) {
-    fail("expected ',' or ')', found " + describeToken(cur_), "SYNTAX_1",
-         cur_.pos.line != open.line ? "the '(' at line " + std::to_string(open.line) + " is still open" : "");
+    fail(cur_.pos.line != open.line ? "SYNTAX_1.tuple_open" : "SYNTAX_1.tuple",
+         {{"token", describeToken(cur_)}, {"line", open.line}});
   }
   advance();
   return finish(std::move(tuple));
@@ -223,8 +218,8 @@ ExprPtr Parser::parseListDisplay(Pos open) {
     list->items.push_back(parseTest());
   }
   if (!at(TokenKind::RBracket)) {
-    fail("expected ',' or ']', found " + describeToken(cur_), "SYNTAX_1",
-         cur_.pos.line != open.line ? "the '[' at line " + std::to_string(open.line) + " is still open" : "");
+    fail(cur_.pos.line != open.line ? "SYNTAX_1.list_open" : "SYNTAX_1.list",
+         {{"token", describeToken(cur_)}, {"line", open.line}});
   }
   advance();
   return finish(std::move(list));
@@ -240,16 +235,16 @@ ExprPtr Parser::parseDictDisplay(Pos open) {
     } else {
       ExprPtr key = parseTest();
       if (!at(TokenKind::Colon)) {
-        fail(at(TokenKind::Comma) || at(TokenKind::RBrace)
-                 ? "sets are not part of the command language"
-                 : "expected ':' in the dictionary, found " + describeToken(cur_),
-             at(TokenKind::Comma) || at(TokenKind::RBrace) ? "SYNTAX_12" : "SYNTAX_1");
+        if (at(TokenKind::Comma) || at(TokenKind::RBrace)) {
+          fail("SYNTAX_12.set");
+        }
+        fail("SYNTAX_1.dict", {{"token", describeToken(cur_)}});
       }
       advance();
       dict->items.push_back(std::move(key));
       dict->items.push_back(parseTest());
       if (at(TokenKind::KwFor)) {
-        fail("dictionary comprehensions are not part of the command language", "SYNTAX_12");
+        fail("SYNTAX_12", {});
       }
     }
     if (!accept(TokenKind::Comma)) {

@@ -37,34 +37,24 @@ private:
   }
   Token expect(TokenKind k, const char* what) {
     if (!at(k)) {
-      fail("expected " + std::string(what) + ", found " + describeToken(cur_));
+      fail("SYNTAX_1.expect", {{"what", what}, {"token", describeToken(cur_)}});
     }
     Token t = std::move(cur_);
     advance();
     return t;
   }
-  [[noreturn]] void fail(const std::string& message, const std::string& id = "SYNTAX_1",
-                         const std::string& note = {}) {
-    failAt(cur_.pos, message, id, note);
-  }
-  [[noreturn]] void failAt(Pos pos, const std::string& message, const std::string& id = "SYNTAX_1",
-                           const std::string& note = {}) {
+  // Catalogue entry `key` (messages/language.msg) with `args`, at the current token or at `pos`.
+  [[noreturn]] void fail(std::string_view key, msg::Args args = {}) { failAt(cur_.pos, key, args); }
+  [[noreturn]] void failAt(Pos pos, std::string_view key, msg::Args args = {}) {
+    Diagnostic d = msg::make(key, args, lexer_.location(pos));
     // an invalid character, or a line end after an unclosed bracket, is already reported
-    if ((cur_.kind != TokenKind::Error && !cur_.recovered) || id != "SYNTAX_1") {
-      Diagnostic d = Diagnostic::syntax(id, message, lexer_.location(pos));
-      if (!note.empty()) {
-        d.withNote(note);
-      }
+    if ((cur_.kind != TokenKind::Error && !cur_.recovered) || d.id != "SYNTAX_1") {
       errors_.push_back(std::move(d));
     }
     throw ParseError{};
   }
-  void report(Pos pos, const std::string& message, const std::string& id, const std::string& note = {}) {
-    Diagnostic d = Diagnostic::syntax(id, message, lexer_.location(pos));
-    if (!note.empty()) {
-      d.withNote(note);
-    }
-    errors_.push_back(std::move(d));
+  void report(Pos pos, std::string_view key, msg::Args args = {}) {
+    errors_.push_back(msg::make(key, args, lexer_.location(pos)));
   }
   void synchronize();
   void skipBlock();
@@ -74,8 +64,7 @@ private:
     explicit Nest(Parser& parser) : p(parser) {
       if (++p.depth_ > maxParseNesting) {
         --p.depth_;
-        p.fail("too deeply nested (more than " + std::to_string(maxParseNesting) + " levels)", "SYNTAX_10",
-               "split the expression or the blocks into smaller parts");
+        p.fail("SYNTAX_10.nesting", {{"max", maxParseNesting}});
       }
     }
     ~Nest() { --p.depth_; }

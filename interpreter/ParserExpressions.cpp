@@ -84,7 +84,7 @@ ExprPtr Parser::parseLambda() {
   while (!at(TokenKind::Colon)) {
     Token name = expect(TokenKind::Name, "a parameter name");
     if (!seen.insert(std::string(name.text)).second) {
-      failAt(name.pos, "duplicate parameter '" + std::string(name.text) + "'", "SYNTAX_14");
+      failAt(name.pos, "SYNTAX_14.3", {{"text", std::string(name.text)}});
     }
     ExprPtr p = node(ExprKind::Name, name.pos);
     p->text = std::string(name.text);

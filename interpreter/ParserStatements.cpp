@@ -31,8 +31,7 @@ void Parser::parseStatement(std::vector<StmtPtr>& out) {
   bool tryStatement = at(TokenKind::KwTry);
   try {
     if (at(TokenKind::Indent)) {
-      report(cur_.pos, "unexpected indent", "SYNTAX_6",
-             "a statement is indented only inside a block (after a ':')");
+      report(cur_.pos, "SYNTAX_6", {});
       skipBlock();
       return;
     }
@@ -54,18 +53,15 @@ void Parser::parseStatement(std::vector<StmtPtr>& out) {
       return;
     case TokenKind::KwExcept:
     case TokenKind::KwFinally:
-      fail("'" + std::string(cur_.text) + "' without a matching 'try' at the same indentation", "SYNTAX_1",
-           "align it with its 'try'");
+      fail("SYNTAX_1.7", {{"text", std::string(cur_.text)}});
     case TokenKind::KwElif:
     case TokenKind::KwElse:
-      fail("'" + std::string(cur_.text) + "' without a matching 'if' at the same indentation", "SYNTAX_1",
-           "align it with its 'if'");
+      fail("SYNTAX_1.8", {{"text", std::string(cur_.text)}});
     case TokenKind::KwClass:
     case TokenKind::KwWith:
-      fail("'" + std::string(cur_.text) + "' statements are not part of the command language", "SYNTAX_12",
-           "command files use assignments, calls, if/for/while/try and def only");
+      fail("SYNTAX_12.2", {{"text", std::string(cur_.text)}});
     case TokenKind::At:
-      fail("decorators are not part of the command language", "SYNTAX_12");
+      fail("SYNTAX_12.3", {});
     default:
       parseSimpleStatements(out);
     }
@@ -110,12 +106,9 @@ void Parser::parseSimpleStatements(std::vector<StmtPtr>& out) {
   out.back()->endLine = prevEndLine_;
   if (!at(TokenKind::EndOfFile)) {
     if (!at(TokenKind::Newline)) {
-      std::string note;
-      if (cur_.kind == TokenKind::Name || cur_.kind == TokenKind::String || cur_.kind == TokenKind::Int ||
-          cur_.kind == TokenKind::Real) {
-        note = "is a ',' or an operator missing before it?";
-      }
-      fail("unexpected " + describeToken(cur_) + " after the end of the statement", "SYNTAX_1", note);
+      const bool operand = cur_.kind == TokenKind::Name || cur_.kind == TokenKind::String ||
+                           cur_.kind == TokenKind::Int || cur_.kind == TokenKind::Real;
+      fail(operand ? "SYNTAX_1.after_operand" : "SYNTAX_1.after", {{"token", describeToken(cur_)}});
     }
     advance();
   }
@@ -133,7 +126,7 @@ StmtPtr Parser::parseSimpleStatement() {
   case TokenKind::KwContinue: {
     bool isBreak = at(TokenKind::KwBreak);
     if (loopDepth_ == 0) {
-      fail(std::string("'") + (isBreak ? "break" : "continue") + "' outside a loop", "SYNTAX_13");
+      fail("SYNTAX_13", {{"value", (isBreak ? "break" : "continue")}});
     }
     advance();
     return std::make_unique<Stmt>(isBreak ? StmtKind::Break : StmtKind::Continue, pos);
@@ -154,7 +147,7 @@ StmtPtr Parser::parseSimpleStatement() {
   }
   case TokenKind::KwReturn: {
     if (defDepth_ == 0) {
-      fail("'return' outside a function", "SYNTAX_13");
+      fail("SYNTAX_13.2", {});
     }
     advance();
     auto s = std::make_unique<Stmt>(StmtKind::Return, pos);
@@ -189,7 +182,7 @@ StmtPtr Parser::parseSimpleStatement() {
     return parseRaise();
   case TokenKind::KwNonlocal:
   case TokenKind::KwYield:
-    fail("'" + std::string(cur_.text) + "' is not part of the command language", "SYNTAX_12");
+    fail("SYNTAX_12.4", {{"text", std::string(cur_.text)}});
   default:
     return parseExpressionStatement();
   }
@@ -212,8 +205,7 @@ StmtPtr Parser::parseExpressionStatement() {
     if (at(kind)) {
       if (first->kind != ExprKind::Name && first->kind != ExprKind::Subscript &&
           first->kind != ExprKind::Attribute) {
-        failAt(first->pos, "cannot use an augmented assignment on this expression", "SYNTAX_11",
-               "the target of '+=' is a name or an indexed element");
+        failAt(first->pos, "SYNTAX_11", {});
       }
       advance();
       auto s = std::make_unique<Stmt>(StmtKind::AugAssign, pos);
@@ -250,14 +242,9 @@ void Parser::checkTarget(const Expr& e, bool del) {
     }
     return;
   case ExprKind::Call:
-    failAt(e.pos, del ? "cannot delete a function call" : "cannot assign to a function call", "SYNTAX_11",
-           del ? ""
-               : "did you mean '==' (comparison) instead of '='? A keyword argument is written inside the "
-                 "call's "
-                 "parentheses");
+    failAt(e.pos, del ? "SYNTAX_11.delete_call" : "SYNTAX_11.assign_call");
   default:
-    failAt(e.pos, del ? "cannot delete this expression" : "cannot assign to this expression", "SYNTAX_11",
-           del ? "" : "the left-hand side of '=' is a name, an indexed element X[i] or a tuple of them");
+    failAt(e.pos, del ? "SYNTAX_11.delete" : "SYNTAX_11.assign");
   }
 }
 
@@ -326,7 +313,7 @@ std::vector<StmtPtr> Parser::parseSuite() {
   }
   advance();
   if (!at(TokenKind::Indent)) {
-    fail("expected an indented block", "SYNTAX_7", "indent the statements of the block (4 spaces)");
+    fail("SYNTAX_7", {});
   }
   advance();
   while (!at(TokenKind::Dedent) && !at(TokenKind::EndOfFile)) {
@@ -400,8 +387,7 @@ StmtPtr Parser::parseTry() {
   while (at(TokenKind::KwExcept)) {
     auto h = std::make_unique<Stmt>(StmtKind::ExceptHandler, cur_.pos);
     if (bare) {
-      fail("an 'except:' without a type must be the last 'except' clause", "SYNTAX_1",
-           "move the bare 'except:' after the clauses that name an error type");
+      fail("SYNTAX_1.9", {});
     }
     advance();
     if (!at(TokenKind::Colon)) {
@@ -425,8 +411,7 @@ StmtPtr Parser::parseTry() {
     s->finalbody = parseSuite();
   }
   if (s->handlers.empty() && s->finalbody.empty()) {
-    fail("expected 'except' or 'finally' after the 'try' block, found " + describeToken(cur_), "SYNTAX_1",
-         "a 'try' block is followed by at least one 'except:' or a 'finally:' clause");
+    fail("SYNTAX_1.10", {{"describe_token", describeToken(cur_)}});
   }
   return s;
 }
@@ -438,8 +423,7 @@ StmtPtr Parser::parseRaise() {
   if (!at(TokenKind::Newline) && !at(TokenKind::Semicolon) && !at(TokenKind::EndOfFile)) {
     s->exprs.push_back(parseTest());
     if (at(TokenKind::KwFrom)) {
-      fail("'raise ... from ...' is not part of the command language", "SYNTAX_12",
-           "raise the error alone: `raise ValueError('...')`");
+      fail("SYNTAX_12.5", {});
     }
   }
   return s;
@@ -465,13 +449,13 @@ StmtPtr Parser::parseDef() {
     p.name = std::string(name.text);
     p.pos = name.pos;
     if (!seen.insert(p.name).second) {
-      failAt(name.pos, "duplicate parameter '" + p.name + "'", "SYNTAX_14");
+      failAt(name.pos, "SYNTAX_14.4", {{"name", p.name}});
     }
     if (p.star == 0 && accept(TokenKind::Assign)) {
       p.defaultValue = parseTest();
       sawDefault = true;
     } else if (p.star == 0 && sawDefault) {
-      failAt(name.pos, "a parameter without a default follows one with a default", "SYNTAX_14");
+      failAt(name.pos, "SYNTAX_14.5", {});
     }
     s->params.push_back(std::move(p));
     if (!accept(TokenKind::Comma)) {

@@ -109,7 +109,7 @@ void Parser::parseFStringInto(const Token& t, Expr& out) {
       continue;
     }
     if (c == '}') {
-      failAt(Pos{line, col, 1}, "single '}' in an f-string", "SYNTAX_15", "write '}}' for a literal brace");
+      failAt(Pos{line, col, 1}, "SYNTAX_15", {});
     }
     if (c != '{') {
       if (literal.empty()) {
@@ -153,7 +153,7 @@ void Parser::parseFStringInto(const Token& t, Expr& out) {
     }
     std::string_view exprText = body.substr(exprBegin, i - exprBegin);
     if (exprText.find_first_not_of(" \t\n") == std::string_view::npos) {
-      failAt(open, "empty expression in an f-string", "SYNTAX_15");
+      failAt(open, "SYNTAX_15.2", {});
     }
     ExprPtr fv = node(ExprKind::FormattedValue, open);
     Lexer sub(lexer_.file(), exprText, exprLine, exprCol);
@@ -181,7 +181,7 @@ void Parser::parseFStringInto(const Token& t, Expr& out) {
         step(body[i]);
         ++i;
       } else {
-        failAt(Pos{line, col, 1}, "expected 'r' or 's' after '!' in an f-string", "SYNTAX_15");
+        failAt(Pos{line, col, 1}, "SYNTAX_15.3", {});
       }
     }
     if (i < body.size() && body[i] == ':') {
@@ -190,8 +190,7 @@ void Parser::parseFStringInto(const Token& t, Expr& out) {
       std::size_t specBegin = i;
       while (i < body.size() && body[i] != '}') {
         if (body[i] == '{') {
-          failAt(Pos{line, col, 1}, "nested replacement fields in a format spec are not supported",
-                 "SYNTAX_15");
+          failAt(Pos{line, col, 1}, "SYNTAX_15.4", {});
         }
         step(body[i]);
         ++i;
@@ -199,7 +198,7 @@ void Parser::parseFStringInto(const Token& t, Expr& out) {
       fv->text = std::string(body.substr(specBegin, i - specBegin));
     }
     if (i >= body.size() || body[i] != '}') {
-      failAt(open, "'{' in an f-string is not closed", "SYNTAX_15", "write '{{' for a literal brace");
+      failAt(open, "SYNTAX_15.5", {});
     }
     step('}');
     ++i;

@@ -7,6 +7,7 @@
 #include "Interpreter.hpp"
 #include "Parser.hpp"
 #include "RealFormulaProgram.hpp"
+#include "messages/Messages.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -165,21 +166,21 @@ double binary(Op op, double a, double b) {
 
 void FormulaProgram::domainError(std::size_t pc, const std::string& what,
                                  std::span<const double> values) const {
-  std::ostringstream message;
-  message << "formula '" << text << "': " << what;
-  if (!parameters.empty()) {
-    message << " for ";
-    for (std::size_t i = 0; i < parameters.size() && i < values.size(); ++i) {
-      message << (i > 0 ? ", " : "") << parameters[i] << "=" << Value(values[i]).repr();
-    }
+  std::ostringstream shown; // X=1.5, Y=2.0
+  for (std::size_t i = 0; i < parameters.size() && i < values.size(); ++i) {
+    shown << (i > 0 ? ", " : "") << parameters[i] << "=" << Value(values[i]).repr();
   }
   Pos p = pc < positions.size() ? positions[pc] : Pos{1, 1, 1};
   SourceLocation at{embedded.file(), p.line, p.column, p.length};
-  Diagnostic d = Diagnostic::fatal("FORMULA_DOMAIN", message.str(), embedded.map(at));
+  Diagnostic d =
+      parameters.empty()
+          ? msg::make("FORMULA_DOMAIN", {{"formula", text}, {"what", what}}, embedded.map(at))
+          : msg::make("FORMULA_DOMAIN.values", {{"formula", text}, {"what", what}, {"values", shown.str()}},
+                      embedded.map(at));
   if (!embedded.mapped() && embedded.origin().known()) {
-    d.withNote("in the formula written at " + embedded.origin().str());
+    d.withNote(msg::text("FORMULA_DOMAIN.n2", {{"origin", embedded.origin().str()}}));
   }
-  throw UserError(std::move(d.withNote("the formula has no value there; check its parameters' range")));
+  throw UserError(std::move(d.withNote(msg::text("FORMULA_DOMAIN.n1"))));
 }
 
 } // namespace formula
@@ -197,7 +198,7 @@ RealFormula::RealFormula(const std::string& text, std::vector<std::string> param
   ParseResult parsed = parseExpressionFile(impl_->embedded.file());
   if (!parsed.errors.empty() || parsed.module->body.empty()) {
     if (parsed.errors.empty()) {
-      parsed.errors.push_back(Diagnostic::syntax("SYNTAX_1", "empty formula", origin));
+      parsed.errors.push_back(msg::make("SYNTAX_1.2", {}, origin));
     }
     throw UserError(impl_->embedded.map(std::move(parsed.errors)));
   }
@@ -215,9 +216,9 @@ const std::vector<std::string>& RealFormula::parameters() const {
 double RealFormula::operator()(std::span<const double> values) const {
   const Impl& impl = *impl_;
   if (values.size() != impl.parameters.size()) {
-    throw UserError(Diagnostic::fatal(
-        "FORMULA_ARGS", "formula '" + impl.text + "' takes " + std::to_string(impl.parameters.size()) +
-                            " values, " + std::to_string(values.size()) + " were given"));
+    throw UserError(msg::make("FORMULA_ARGS", {{"text", impl.text},
+                                               {"parameters_count", std::to_string(impl.parameters.size())},
+                                               {"values_count", std::to_string(values.size())}}));
   }
   constexpr int smallStack = 32;
   double small[smallStack];

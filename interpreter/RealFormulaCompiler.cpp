@@ -3,6 +3,7 @@
 #include "Diagnostics.hpp"
 #include "RealFormulaProgram.hpp"
 #include "Suggest.hpp"
+#include "messages/Messages.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -42,12 +43,14 @@ public:
   }
 
 private:
-  [[noreturn]] void fail(const Expr& e, const std::string& message, const std::string& note = {}) {
-    Diagnostic d = Diagnostic::fatal(
-        "FORMULA_SYNTAX", message,
+  // Throws catalogue entry `key` (messages/language.msg) at `e`, then `suggestion` if not empty.
+  [[noreturn]] void fail(const Expr& e, std::string_view key, msg::Args args = {},
+                         const std::string& suggestion = {}) {
+    Diagnostic d = msg::make(
+        key, args,
         impl_.embedded.map(SourceLocation{impl_.embedded.file(), e.pos.line, e.pos.column, e.pos.length}));
-    if (!note.empty()) {
-      d.withNote(note);
+    if (!suggestion.empty()) {
+      d.withNote(suggestion);
     }
     throw UserError(std::move(d));
   }
@@ -108,23 +111,23 @@ private:
       known.push_back(n);
     }
     known.emplace_back("pi");
-    std::string note = suggestionNote(e.text, known);
-    if (note.empty()) {
-      note = "a formula reads its parameters (NOM_PARA), the constants given to FORMULE, pi and e";
+    const std::string suggestion = suggestionNote(e.text, known);
+    if (suggestion.empty()) {
+      fail(e, "FORMULA_SYNTAX.name", {{"name", e.text}});
     }
-    fail(e, "name '" + e.text + "' is not a parameter of the formula", note);
+    fail(e, "FORMULA_SYNTAX.name_suggested", {{"name", e.text}}, suggestion);
   }
 
   void call(const Expr& e) {
     const Expr& callee = *e.items[0];
     if (callee.kind != ExprKind::Name) {
-      fail(callee, "a formula can call only math functions (sqrt, exp, sin...)");
+      fail(callee, "FORMULA_SYNTAX", {});
     }
     std::size_t n = e.items.size() - 1;
     for (std::size_t i = 1; i < e.items.size(); ++i) {
       ExprKind k = e.items[i]->kind;
       if (k == ExprKind::Keyword || k == ExprKind::Star || k == ExprKind::DoubleStar) {
-        fail(*e.items[i], "math functions take positional arguments only");
+        fail(*e.items[i], "FORMULA_SYNTAX.2", {});
       }
     }
     auto u = unaryFunctions().find(callee.text);
@@ -154,7 +157,7 @@ private:
       return;
     }
     if (u != unaryFunctions().end() || b != binaryFunctions().end()) {
-      fail(callee, callee.text + "() called with " + std::to_string(n) + " arguments");
+      fail(callee, "FORMULA_SYNTAX.3", {{"text", callee.text}, {"n", std::to_string(n)}});
     }
     std::vector<std::string> known;
     for (const auto& [k, v] : unaryFunctions()) {
@@ -163,12 +166,11 @@ private:
     for (const auto& [k, v] : binaryFunctions()) {
       known.push_back(k);
     }
-    std::string note = suggestionNote(callee.text, known);
-    fail(callee, "'" + callee.text + "' is not a math function available in formulas",
-         note.empty()
-             ? "available: sqrt exp log log10 sin cos tan asin acos atan atan2 sinh cosh tanh abs fabs "
-               "floor ceil pow hypot fmod min max"
-             : note);
+    const std::string suggestion = suggestionNote(callee.text, known);
+    if (suggestion.empty()) {
+      fail(callee, "FORMULA_SYNTAX.function", {{"name", callee.text}});
+    }
+    fail(callee, "FORMULA_SYNTAX.function_suggested", {{"name", callee.text}}, suggestion);
   }
 
   // Emits a jump whose target is patched later; returns its index.
@@ -202,7 +204,7 @@ private:
           emit(Instr{Op::Neg}, e.pos, 0);
         }
       } else if (static_cast<UnaryOp>(e.op) == UnaryOp::Invert) {
-        fail(e, "'~' is not a real operation");
+        fail(e, "FORMULA_SYNTAX.4", {});
       }
       return;
     case ExprKind::Not:
@@ -213,7 +215,7 @@ private:
       static const Op ops[] = {Op::Add, Op::Sub, Op::Mul, Op::Div, Op::FloorDiv, Op::Mod, Op::Pow};
       auto op = static_cast<BinaryOp>(e.op);
       if (static_cast<int>(op) > static_cast<int>(BinaryOp::Pow)) {
-        fail(e, std::string("operator '") + binaryOpText(op) + "' is not a real operation");
+        fail(e, "FORMULA_SYNTAX.5", {{"binary_op_text", binaryOpText(op)}});
       }
       expr(*e.items[0]);
       expr(*e.items[1]);
@@ -227,7 +229,7 @@ private:
         static const Op ops[] = {Op::Lt, Op::Gt, Op::Le, Op::Ge, Op::Eq, Op::Ne};
         auto c = static_cast<int>(e.compareOp(i));
         if (c > static_cast<int>(CompareOp::Ne)) {
-          fail(e, std::string("'") + compareOpText(e.compareOp(i)) + "' is not a real comparison");
+          fail(e, "FORMULA_SYNTAX.6", {{"compare_op_text", compareOpText(e.compareOp(i))}});
         }
         expr(*e.items[i]);
         expr(*e.items[i + 1]);
@@ -270,8 +272,7 @@ private:
       call(e);
       return;
     default:
-      fail(e, "this expression is not a real-valued formula",
-           "a formula uses numbers, its parameters, + - * / ** //, comparisons and math functions");
+      fail(e, "FORMULA_SYNTAX.7", {});
     }
   }
 

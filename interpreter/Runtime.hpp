@@ -7,6 +7,7 @@
 #include "SequenceObject.hpp"
 #include "Value.hpp"
 #include "WorkMeter.hpp"
+#include "messages/Messages.hpp"
 
 #include <cstdint>
 #include <string>
@@ -19,7 +20,8 @@ struct LangError {
   std::string note;
 };
 
-[[noreturn]] void langError(std::string id, std::string message, std::string note = {});
+// Throws the LangError of catalogue entry `key` (messages/language.msg) formatted with `args`.
+[[noreturn]] void langError(std::string_view key, msg::Args args = {});
 
 // Sizes the language refuses to build (a list of more items, a longer string).
 struct RuntimeLimits {
@@ -162,8 +164,7 @@ template <class F> void forEachItem(const Value& v, F&& f) {
       }
       return;
     }
-    langError("LANG_TYPE", "'" + v.typeName() + "' object is not iterable",
-              "a for loop runs over a list, a tuple, a string, a dict or a range");
+    langError("LANG_TYPE.7", {{"type_name", v.typeName()}});
   }
 }
 

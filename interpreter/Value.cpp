@@ -4,6 +4,7 @@
 #include "Diagnostics.hpp"
 #include "Exceptions.hpp"
 #include "StringEscape.hpp"
+#include "messages/Messages.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -91,11 +92,8 @@ std::string quoteString(const std::string& s) {
 namespace {
 
 [[noreturn]] void tooDeep(const char* what) {
-  throw UserError(Diagnostic::fatal("LANG_DEPTH", std::string("value nested too deeply to ") + what +
-                                                      " (more than " + std::to_string(maxValueNesting) +
-                                                      " levels)")
-                      .withNote("a list, tuple or dict that contains itself or is nested this deep "
-                                "cannot be printed or compared"));
+  throw UserError(
+      msg::make("LANG_DEPTH", {{"what", what}, {"max_value_nesting", std::to_string(maxValueNesting)}}));
 }
 
 // Containers being printed, to print a list that contains itself as [...] like Python.

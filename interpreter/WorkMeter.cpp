@@ -96,11 +96,7 @@ std::int64_t WorkMeter::languageMemory() const {
 }
 
 void WorkMeter::operationsExceeded() const {
-  langError("LANG_BUDGET",
-            "the evaluation budget of " + withThousands(operationLimit_) +
-                " operations (statements, loop turns, expressions and items visited) is spent",
-            "a loop that does not end, or more work than a command file should do; if it is intended, raise "
-            "the budget with `stella run --max-operations N`");
+  langError("LANG_BUDGET", {{"with_thousands", withThousands(operationLimit_)}});
 }
 
 void WorkMeter::checkMemory(std::int64_t upcoming) {
@@ -110,11 +106,8 @@ void WorkMeter::checkMemory(std::int64_t upcoming) {
   }
   const std::int64_t used = languageMemory() + upcoming;
   if (used > memoryLimit_) {
-    langError("LANG_BUDGET",
-              "the values of the command file hold " + formatBytes(used) + ", more than the budget of " +
-                  formatBytes(memoryLimit_),
-              "a list or a string that grows without end; if it is intended, raise the budget with "
-              "`stella run --max-memory MIB`");
+    langError("LANG_BUDGET.2",
+              {{"format_bytes", formatBytes(used)}, {"format_bytes_2", formatBytes(memoryLimit_)}});
   }
 }
 

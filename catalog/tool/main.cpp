@@ -7,6 +7,7 @@
 #include "catalog/Catalog.hpp"
 
 #include "interpreter/Interpreter.hpp"
+#include "messages/Messages.hpp"
 
 #include <iostream>
 
@@ -37,8 +38,7 @@ public:
   }
   stella::Value conceptAttribute(const std::shared_ptr<stella::Concept>& c, const std::string& name,
                                  const stella::SourceLocation& at) override {
-    throw stella::UserError(stella::Diagnostic::fatal(
-        "CATALOG_CHECK", "validation does not compute " + c->name + "." + name, at));
+    throw stella::UserError(stella::msg::make("CATALOG_CHECK", {{"name", c->name}, {"name_2", name}}, at));
   }
   bool finished() const override { return finished_; }
 

@@ -3,6 +3,7 @@
 #include "solver/assembly/ExternalForces.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/assembly/VolumeAssembler.hpp"
 #include "solver/loads/SkinLoads.hpp"
 
@@ -64,11 +65,7 @@ Eigen::VectorXd loadForces(const MechanicalLoad& load, const DofMap& dofs, const
     for (CellId c : g.cells) {
       const Material* m = materials != nullptr ? materials->material(c) : nullptr;
       if (m == nullptr || !m->elastic || !m->elastic->density) {
-        throw UserError(
-            Diagnostic::fatal(
-                "LOAD_7",
-                fmt::format("PESANTEUR on cell {} needs the density RHO of its material", mesh.cellName(c)))
-                .withNote("add RHO to ELAS in DEFI_MATERIAU"));
+        throw UserError(msg::make("LOAD_7", {{"cell_name", mesh.cellName(c)}}));
       }
       const double rho = *m->elastic->density;
       const auto x = cellCoordinates(mesh, c, dim);

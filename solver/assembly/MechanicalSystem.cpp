@@ -3,6 +3,7 @@
 #include "solver/assembly/MechanicalSystem.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/assembly/ExternalForces.hpp"
 
 #include <fmt/format.h>
@@ -13,10 +14,7 @@ namespace {
 
 void checkModel(const Model* loadModel, const Model& model, const SourceLocation& at) {
   if (loadModel != &model) {
-    throw UserError(
-        Diagnostic::fatal("LOAD_8", "a load of EXCIT was defined on another model than MODELE", at)
-            .withNote("build the loads (AFFE_CHAR_MECA, AFFE_CHAR_CINE) with MODELE= the model of the "
-                      "analysis"));
+    throw UserError(msg::make("LOAD_8", {}, at));
   }
 }
 
@@ -33,8 +31,7 @@ MechanicalSystem::MechanicalSystem(std::shared_ptr<const Model> model,
       behaviours_(*model_, *materials_, relations, at, std::move(strains)),
       assembler_(*model_, dofs_, behaviours_, cara_.get()) {
   if (cara_ && cara_->model.get() != model_.get()) {
-    throw UserError(Diagnostic::fatal("CARA_6", "CARA_ELEM was defined on another model than MODELE", at)
-                        .withNote("build it with AFFE_CARA_ELEM(MODELE= the model of the analysis, ...)"));
+    throw UserError(msg::make("CARA_6", {}, at));
   }
   checkDiscreteElementsCovered(*model_, cara_.get(), at);
   std::vector<ConstraintRow> rows;

@@ -3,6 +3,7 @@
 #include "solver/assembly/VolumeAssembler.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/fem/ElementMatrices.hpp"
 #include "solver/fem/GreenLagrange.hpp"
 #include "solver/fem/Kinematics.hpp"
@@ -74,11 +75,14 @@ Eigen::Map<const Eigen::VectorXd> row(const Field& f, std::size_t point) {
   return Eigen::Map<const Eigen::VectorXd>(s.data(), static_cast<Eigen::Index>(s.size()));
 }
 
-std::string degenerateCellMessage(const Mesh& mesh, CellId c, const fem::DegenerateElementError& e) {
+Diagnostic degenerateCellDiagnostic(const Mesh& mesh, CellId c, const fem::DegenerateElementError& e,
+                                    fem::Modelling m) {
   const bool plane = dimension(mesh.cellType(c)) == 2;
-  return fmt::format("cell {} ({}) has a {} Jacobian ({:g}) at Gauss point {}", mesh.cellName(c),
-                     name(mesh.cellType(c)), plane ? "vanishing or sign-changing" : "non-positive",
-                     e.jacobian(), e.gaussPoint() + 1);
+  return msg::make(plane ? "ELEM_1.2" : "ELEM_1", {{"cell", mesh.cellName(c)},
+                                                   {"type", name(mesh.cellType(c))},
+                                                   {"jacobian", e.jacobian()},
+                                                   {"point", e.gaussPoint() + 1}})
+      .withNote(m == fem::Modelling::Axisymmetric ? msg::text("ELEM_1.n1") : msg::text("ELEM_1.n2"));
 }
 
 // GROT_GDEP at the points of one cell: element displacements at the start and end of the step,
@@ -130,12 +134,7 @@ AssemblyStatus VolumeAssembler::run(const Eigen::VectorXd& uStart, const Eigen::
       fem::computeKinematics(mesh.cellType(c), m, cellCoordinates(mesh, c, dim), kin,
                              model_.cell(c).volumeStrain);
     } catch (const fem::DegenerateElementError& e) {
-      throw UserError(
-          Diagnostic::fatal("ELEM_1", degenerateCellMessage(mesh, c, e))
-              .withNote(m == fem::Modelling::Axisymmetric
-                            ? "in AXIS the cell must lie in x >= 0 and must not be flat or folded"
-                            : "the cell is inverted, folded or flat: check the mesh (node order, duplicated "
-                              "nodes); a 2D cell may turn either way but not both"));
+      throw UserError(degenerateCellDiagnostic(mesh, c, e, m));
     }
     cellDofs(c, dofs);
     const Eigen::VectorXd due = gather(du, dofs);

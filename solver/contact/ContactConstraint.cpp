@@ -3,6 +3,8 @@
 
 #include "solver/contact/ContactConstraint.hpp"
 
+#include "messages/Messages.hpp"
+#include "solver/contact/ContactAlarm.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 
@@ -242,16 +244,12 @@ bool ContactConstraint::acceptConvergence(const Eigen::VectorXd& u) {
     lastGeometricResidual_ = r;
     if (s.geometricUpdate == GeometricUpdate::Automatic && r > s.geometricResidual && !farApart(u)) {
       if (geometricIterations_ >= s.maxGeometricIterations) {
-        throw UserError(
-            Diagnostic::noConvergence(
-                "CONTACT_GEOM_1",
-                fmt::format("the geometric loop of contact did not converge at INST {}: after {} pairings "
-                            "the contact nodes still move by {:.3e} of the step's displacement "
-                            "(RESI_GEOM = {})",
-                            time_, geometricIterations_, r, s.geometricResidual),
-                definition_->location)
-                .withNote("raise ITER_GEOM_MAXI, refine the list of instants, check the choice of master "
-                          "and slave surfaces and their meshes, or try LISSAGE='OUI' (notice §2.4.3.2)"));
+        throw UserError(msg::make("CONTACT_GEOM_1",
+                                  {{"time", time_},
+                                   {"geometric_iterations", geometricIterations_},
+                                   {"r", r},
+                                   {"geometric_residual", s.geometricResidual}},
+                                  definition_->location));
       }
       pairAt(u);
       ++geometricIterations_;
@@ -264,9 +262,8 @@ bool ContactConstraint::acceptConvergence(const Eigen::VectorXd& u) {
         return false;
       }
       if (s.geometricIterations >= 2 && r > 0.01) {
-        noteAlarm(fmt::format("CONTACT_GEOM_2: REAC_GEOM='CONTROLE': after NB_ITER_GEOM = {} pairings the "
-                              "geometric criterion is {:.3e} > 1 %: check the result (notice §2.4.3.2)",
-                              s.geometricIterations, r));
+        noteAlarm(alarmLine(
+            msg::make("CONTACT_GEOM_2", {{"geometric_iterations", s.geometricIterations}, {"r", r}})));
       }
     }
   }
@@ -323,9 +320,9 @@ void ContactConstraint::finishStep(const Eigen::VectorXd& u) {
         (links_[k].paired && !resolvedZone_[static_cast<std::size_t>(links_[k].zone)] && states[k].gap < 0.0);
   }
   if (measuredPenetration) {
-    noteAlarm(fmt::format("CONTACT_8: interpenetration of {:.6e} at slave node {} in a zone with "
-                          "RESOLUTION='NON' (contact measured, not resolved: notice §4.8)",
-                          maxInterpenetration_, worst >= 0 ? mesh.nodeName(worst) : std::string("-")));
+    noteAlarm(
+        alarmLine(msg::make("CONTACT_8", {{"max_interpenetration", maxInterpenetration_},
+                                          {"worst", worst >= 0 ? mesh.nodeName(worst) : std::string("-")}})));
   }
   accepted(rowStates);
   states_ = std::move(states);

@@ -3,6 +3,7 @@
 
 #include "solver/contact/ContactDefinition.hpp"
 
+#include "messages/Messages.hpp"
 #include "solver/mesh/SkinOrientation.hpp"
 
 #include <fmt/format.h>
@@ -26,9 +27,8 @@ const std::vector<CellId>& cellGroupOrThrow(const Mesh& mesh, const std::string&
                                             const std::string& keyword, const SourceLocation& at) {
   const auto* cells = mesh.cellGroup(group);
   if (cells == nullptr) {
-    throw UserError(
-        Diagnostic::fatal("CONTACT_1", fmt::format("{}: the mesh has no cell group '{}'", keyword, group), at)
-            .withNote(fmt::format("its cell groups are: {}", groupList(mesh))));
+    throw UserError(msg::make("CONTACT_1",
+                              {{"keyword", keyword}, {"group", group}, {"group_list", groupList(mesh)}}, at));
   }
   return *cells;
 }
@@ -60,15 +60,13 @@ void checkCellDimensions(const Mesh& mesh, const std::vector<CellId>& cells, con
                                 : (t == CellType::TRIA3 || t == CellType::TRIA6 || t == CellType::QUAD4 ||
                                    t == CellType::QUAD8 || t == CellType::QUAD9);
     if (!ok) {
-      throw UserError(
-          Diagnostic::fatal(
-              "CONTACT_4",
-              fmt::format("contact group '{}' holds cell {} of type {}, not a contact cell of a {}D mesh",
-                          group, mesh.cellName(c), info(t).name, mesh.dimension()),
-              at)
-              .withNote(wanted == 1
-                            ? "a 2D or axisymmetric contact surface is made of SEG2 or SEG3 edges"
-                            : "a 3D contact surface is made of TRIA3, TRIA6, QUAD4, QUAD8 or QUAD9 faces"));
+      throw UserError(msg::make("CONTACT_4",
+                                {{"group", group},
+                                 {"cell_name", mesh.cellName(c)},
+                                 {"name", info(t).name},
+                                 {"dimension", mesh.dimension()}},
+                                at)
+                          .withNote(wanted == 1 ? msg::text("CONTACT_4.n1") : msg::text("CONTACT_4.n2")));
     }
   }
 }
@@ -86,21 +84,15 @@ void checkNormals(const Mesh& mesh, const std::vector<CellId>& cells, const std:
   }
   if (!inward.empty()) {
     const std::size_t shown = std::min<std::size_t>(inward.size(), 10);
-    throw UserError(
-        Diagnostic::fatal(
-            "CONTACT_5",
-            fmt::format(
-                "the normals of contact group '{}' point into the volume they bound on {} "
-                "cell(s): {}{}",
-                group, inward.size(),
-                fmt::join(std::vector<std::string>(inward.begin(), inward.begin() + static_cast<long>(shown)),
-                          ", "),
-                inward.size() > shown ? " ..." : ""),
-            at)
-            .withNote(
-                fmt::format("orient the group outward with MODI_MAILLAGE(ORIE_PEAU=_F(GROUP_MA_PEAU='{}')) "
-                            "(ORIE_PEAU_2D / ORIE_PEAU_3D in older versions), or set VERI_NORM='NON'",
-                            group)));
+    throw UserError(msg::make(
+        "CONTACT_5",
+        {{"group", group},
+         {"inward_count", inward.size()},
+         {"join",
+          fmt::join(std::vector<std::string>(inward.begin(), inward.begin() + static_cast<long>(shown)),
+                    ", ")},
+         {"inward_count_2", inward.size() > shown ? " ..." : ""}},
+        at));
   }
 }
 
@@ -170,38 +162,32 @@ void checkContactDefinition(const ContactDefinition& def) {
     }
     for (const auto& g : zone.excludedNodeGroups) {
       if (!mesh.hasNodeGroup(g)) {
-        throw UserError(Diagnostic::fatal("CONTACT_1",
-                                          fmt::format("SANS_GROUP_NO: the mesh has no node group '{}'", g),
-                                          zone.location)
-                            .withNote("create it with DEFI_GROUP(CREA_GROUP_NO=...)"));
+        throw UserError(msg::make("CONTACT_1.2", {{"g", g}}, zone.location));
       }
     }
     checkCellDimensions(mesh, master, zone.masterGroup, zone.location);
     checkCellDimensions(mesh, slave, zone.slaveGroup, zone.location);
     const auto shared = intersection(mesh.nodesOfCells(master), zoneSlaveNodes(mesh, zone));
     if (!shared.empty()) {
-      throw UserError(
-          Diagnostic::fatal(
-              "CONTACT_2",
-              fmt::format("the master surface '{}' and the slave surface '{}' of a contact zone "
-                          "share {} node(s): {}",
-                          zone.masterGroup, zone.slaveGroup, shared.size(), nodeNames(mesh, shared)),
-              zone.location)
-              .withNote("exclude the shared nodes from the slave side with SANS_GROUP_NO (notice §2.3.4)"));
+      throw UserError(msg::make("CONTACT_2",
+                                {{"master_group", zone.masterGroup},
+                                 {"slave_group", zone.slaveGroup},
+                                 {"shared_count", shared.size()},
+                                 {"node_names", nodeNames(mesh, shared)}},
+                                zone.location));
     }
     auto slaveNodes = zoneSlaveNodes(mesh, zone);
     for (std::size_t k = 0; k < slaves.size(); ++k) {
       const auto common = intersection(slaves[k], slaveNodes);
       if (!common.empty()) {
-        throw UserError(
-            Diagnostic::fatal(
-                "CONTACT_3",
-                fmt::format("the slave surfaces of zones {} ('{}') and {} ('{}') share {} node(s): {}", k + 1,
-                            def.zones[k].slaveGroup, slaves.size() + 1, zone.slaveGroup, common.size(),
-                            nodeNames(mesh, common)),
-                zone.location)
-                .withNote("slave surfaces of distinct zones must be disjoint: merge the zones or exclude the "
-                          "nodes with SANS_GROUP_NO"));
+        throw UserError(msg::make("CONTACT_3",
+                                  {{"k", k + 1},
+                                   {"slave_group", def.zones[k].slaveGroup},
+                                   {"slaves_count", slaves.size() + 1},
+                                   {"slave_group_2", zone.slaveGroup},
+                                   {"common_count", common.size()},
+                                   {"node_names", nodeNames(mesh, common)}},
+                                  zone.location));
       }
     }
     slaves.push_back(std::move(slaveNodes));

@@ -4,6 +4,7 @@
 
 #include "solver/contact/ContactPairing.hpp"
 
+#include "messages/Messages.hpp"
 #include "solver/contact/MasterSurface.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 
@@ -111,9 +112,7 @@ ZonePairing::ZonePairing(const Mesh& mesh, int zoneIndex, const ContactZone& zon
                          const PairingOptions& options)
     : mesh_(&mesh), zoneIndex_(zoneIndex), zone_(zone), options_(options), dim_(options.dimension - 1) {
   if (zone.projection == Projection::Fixed) {
-    throw UserError(
-        Diagnostic::fatal("CONTACT_10", "TYPE_PROJECTION='FIXE' is not implemented yet", zone.location)
-            .withNote("use TYPE_PROJECTION='ORTHOGONALE' (the default)"));
+    throw UserError(msg::make("CONTACT_10", {}, zone.location));
   }
   slaves_ = zoneSlaveNodes(mesh, zone);
   master_ = std::make_unique<MasterSurface>(mesh, zoneMasterCells(mesh, zone), dim_);

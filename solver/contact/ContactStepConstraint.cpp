@@ -5,6 +5,7 @@
 #include "solver/contact/ContactStepConstraint.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/assembly/MechanicalSystem.hpp"
 #include "solver/contact/ContinuousAdaptation.hpp"
 #include "solver/contact/ContinuousContactConstraint.hpp"
@@ -39,19 +40,13 @@ protected:
 };
 
 [[noreturn]] void notImplemented(const std::string& what, const SourceLocation& at, const std::string& note) {
-  throw UserError(Diagnostic::fatal("CONTACT_20",
-                                    fmt::format("STAT_NON_LINE CONTACT: {} is not implemented yet", what), at)
-                      .withNote(note));
+  throw UserError(msg::make("CONTACT_20", {{"what", what}}, at).withNote(note));
 }
 
 void checkAgainstSystem(const ContactDefinition& def, const MechanicalSystem& system,
                         const SourceLocation& at) {
   if (def.mesh.get() != system.model().mesh.get()) {
-    throw UserError(Diagnostic::fatal("CONTACT_21",
-                                      "the contact definition (DEFI_CONTACT MODELE) is on another mesh than "
-                                      "the model of STAT_NON_LINE",
-                                      at)
-                        .withNote("build DEFI_CONTACT with MODELE= the model given to STAT_NON_LINE"));
+    throw UserError(msg::make("CONTACT_21", {}, at));
   }
   const Mesh& mesh = *def.mesh;
   for (const auto& zone : def.zones) {
@@ -63,15 +58,7 @@ void checkAgainstSystem(const ContactDefinition& def, const MechanicalSystem& sy
       for (NodeId n : mesh.nodesOfCells(*cells)) {
         if (system.dofs().dof(n, 0) < 0) {
           throw UserError(
-              Diagnostic::fatal(
-                  "CONTACT_6",
-                  fmt::format("node {} of contact group '{}' carries no displacement DOF in the "
-                              "model of STAT_NON_LINE",
-                              mesh.nodeName(n), group),
-                  zone.location)
-                  .withNote(
-                      "assign elements to the contact surface in AFFE_MODELE (a rigid surface: its skin "
-                      "with all its DOFs imposed, notice §4.6)"));
+              msg::make("CONTACT_6", {{"node_name", mesh.nodeName(n)}, {"group", group}}, zone.location));
         }
       }
     }
@@ -287,11 +274,7 @@ std::unique_ptr<StepConstraint> makeContactConstraint(const ContactStepInputs& i
           def->location, "use ALGO_CONT='PENALISATION' with E_N for contact with friction");
     }
     if (*algorithm == ContactAlgorithm::Gcp && !def->settings.gcpTolerance) {
-      throw UserError(Diagnostic::fatal("CONTACT_24",
-                                        "ALGO_CONT='GCP' needs RESI_ABSO, the interpenetration it tolerates",
-                                        def->location)
-                          .withNote("RESI_ABSO is in the mesh's length unit; start with 1e-3 times the mean "
-                                    "interpenetration measured without contact (notice §3.2.1.3, §4.8)"));
+      throw UserError(msg::make("CONTACT_24", {}, def->location));
     }
     if (policy) {
       notImplemented(

@@ -3,6 +3,7 @@
 
 #include "solver/contact/ContinuousAdaptation.hpp"
 
+#include "messages/Messages.hpp"
 #include "solver/model/MaterialField.hpp"
 
 #include <algorithm>
@@ -117,16 +118,13 @@ adaptContinuousCoefficients(std::shared_ptr<const ContactDefinition> definition,
     const double h = shortestEdge(mesh, z.slaveGroup);
     if (!(slave > 0.0) || !(master > 0.0) || !std::isfinite(h)) {
       throw UserError(
-          Diagnostic::fatal("CONTACT_ADAPT_1",
-                            fmt::format("ADAPTATION='{}' needs the stiffness of both bodies of the zone "
-                                        "(GROUP_MA_ESCL='{}', GROUP_MA_MAIT='{}'): {}",
-                                        c.adaptation, z.slaveGroup, z.masterGroup,
-                                        !std::isfinite(h) ? "its slave cells have no edge"
-                                                          : "a surface touches no volume cell with ELAS"),
-                            c.adaptationAt)
-              .withNote(
-                  "give the bodies' material ELAS in CHAM_MATER, or use ADAPTATION='NON' or 'CYCLAGE' with "
-                  "COEF_CONT / COEF_PENA_CONT in the units of the study"));
+          msg::make("CONTACT_ADAPT_1",
+                    {{"adaptation", c.adaptation},
+                     {"slave_group", z.slaveGroup},
+                     {"master_group", z.masterGroup},
+                     {"isfinite", !std::isfinite(h) ? "its slave cells have no edge"
+                                                    : "a surface touches no volume cell with ELAS"}},
+                    c.adaptationAt));
     }
     c.stiffness = 1.0 / (1.0 / slave + 1.0 / master) / h;
     c.augmentation *= c.stiffness;

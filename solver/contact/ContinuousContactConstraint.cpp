@@ -6,6 +6,8 @@
 #include "solver/contact/ContinuousIntegrationRule.hpp"
 #include "solver/contact/MultiplierSchur.hpp"
 
+#include "messages/Messages.hpp"
+#include "solver/contact/ContactAlarm.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/fem/Quadrature.hpp"
 #include "solver/fem/ReferenceElement.hpp"
@@ -66,20 +68,10 @@ void ContinuousContactConstraint::computeWeights() {
     for (CellId c : *cells) {
       const CellType type = mesh.cellType(c);
       if (!nodeIntegrable(type)) {
-        throw UserError(
-            Diagnostic::fatal(
-                "CONTACT_20",
-                fmt::format("STAT_NON_LINE CONTACT: INTEGRATION='AUTO' on {} slave cells (cell {} of "
-                            "'{}') with FORMULATION='CONTINUE' is not implemented yet",
-                            name(type), mesh.cellName(c), zone.slaveGroup),
-                zone.location)
-                .withNote(
-                    "INTEGRATION='AUTO' integrates a TRIA6 at its 6 Gauss points of degree 4 and a QUAD8 at "
-                    "the 3 x 3 Simpson points (its centre is not a node): contact points that are not slave "
-                    "nodes, which the continuous formulation of stella does not have yet (one contact "
-                    "condition per slave node; the vertex shape functions of TRIA6 and QUAD8 have zero or "
-                    "negative integrals, so they cannot weigh nodal conditions); mesh the slave surface with "
-                    "TRIA3, QUAD4 or QUAD9 (SEG2 or SEG3 in 2D), as the notice advises for curved surfaces"));
+        throw UserError(msg::make(
+            "CONTACT_20.2",
+            {{"name", name(type)}, {"cell_name", mesh.cellName(c)}, {"slave_group", zone.slaveGroup}},
+            zone.location));
       }
       const fem::ReferenceElement& ref = fem::referenceElement(type);
       const fem::QuadratureRule& rule = fem::rigiRule(type, fem::IntegrationRole::Skin);
@@ -398,17 +390,12 @@ void ContinuousContactConstraint::correct(const Eigen::VectorXd& u, Eigen::Vecto
 
 void ContinuousContactConstraint::redundant(Eigen::Index row) const {
   const auto& l = links_[static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(row)])];
-  throw UserError(
-      Diagnostic::fatal(
-          "CONTACT_11",
-          fmt::format("the contact conditions are redundant at INST {}: the gap{} of slave node "
-                      "{} (zone {}) cannot move independently of the other nodes in contact",
-                      time_, friction() ? " or slip" : "", definition_->mesh->nodeName(l.slave), l.zone + 1),
-          definition_->zones[static_cast<std::size_t>(l.zone)].location)
-          .withNote(
-              "a slave node also held by DDL_IMPO or a symmetry condition in the normal (with friction: "
-              "or tangential) direction, or two zones constraining the same node, make the conditions "
-              "redundant (notice §4.7): exclude it with SANS_GROUP_NO"));
+  throw UserError(msg::make("CONTACT_11",
+                            {{"time", time_},
+                             {"friction", friction() ? " or slip" : ""},
+                             {"node_name", definition_->mesh->nodeName(l.slave)},
+                             {"zone", l.zone + 1}},
+                            definition_->zones[static_cast<std::size_t>(l.zone)].location));
 }
 
 bool ContinuousContactConstraint::acceptResolution(const Eigen::VectorXd& u) {
@@ -438,10 +425,7 @@ bool ContinuousContactConstraint::acceptResolution(const Eigen::VectorXd& u) {
     }
   }
   if (frozen > 0) {
-    noteAlarm(fmt::format("CONTACT_27: {} slave node(s) cycled in and out of contact at INST {} (flip-flop): "
-                          "their status is frozen for the rest of the step (ADAPTATION='CYCLAGE'); check the "
-                          "contact pressure there",
-                          frozen, time_));
+    noteAlarm(alarmLine(msg::make("CONTACT_27", {{"frozen", frozen}, {"time", time_}})));
   }
   status_ = statusAt(u); // with the frozen nodes
   ++statusIterations_;
@@ -450,15 +434,8 @@ bool ContinuousContactConstraint::acceptResolution(const Eigen::VectorXd& u) {
                                         : c.maxStatusIterations;
   if (statusIterations_ > cap) {
     throw UserError(
-        Diagnostic::noConvergence("CONTACT_26",
-                                  fmt::format("the contact status loop did not converge at INST {}: after {} "
-                                              "status iterations {} slave node(s) still change status",
-                                              time_, cap, changed),
-                                  definition_->location)
-            .withNote(newton
-                          ? "try ALGO_RESO_CONT='POINT_FIXE', or refine the list of instants"
-                          : "raise ITER_CONT_MAXI (or ITER_CONT_MULT with ITER_CONT_TYPE='MULT'), or refine "
-                            "the list of instants"));
+        msg::make("CONTACT_26", {{"time", time_}, {"cap", cap}, {"changed", changed}}, definition_->location)
+            .withNote(newton ? msg::text("CONTACT_26.n1") : msg::text("CONTACT_26.n2")));
   }
   lastStatus_ = status_;
   continuation_ = fmt::format("contact status changed on {} slave node(s): Newton iterations go on", changed);

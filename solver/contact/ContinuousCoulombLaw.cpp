@@ -1,6 +1,7 @@
 // The Coulomb law of a friction point of the continuous formulation (see the header).
 
 #include "solver/contact/ContinuousCoulombLaw.hpp"
+#include "messages/Messages.hpp"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -77,16 +78,13 @@ FrictionLoop frictionLoopStep(const ContinuousSettings& c, double criterion, int
     return FrictionLoop::NewtonGoesOn;
   }
   if (++iterations > c.maxFrictionIterations) {
-    throw UserError(
-        Diagnostic::noConvergence(
-            "CONTACT_28",
-            fmt::format(
-                "the friction loop (ALGO_RESO_FROT='POINT_FIXE') did not converge at INST {}: after {} "
-                "friction iterations the threshold |LAGS_C|{} still changes by {:.2e} of its maximum "
-                "(RESI_FROT {:g})",
-                time, c.maxFrictionIterations, what, criterion, c.frictionResidual),
-            at)
-            .withNote("raise ITER_FROT_MAXI, use ALGO_RESO_FROT='NEWTON', or refine the list of instants"));
+    throw UserError(msg::make("CONTACT_28",
+                              {{"time", time},
+                               {"max_friction_iterations", c.maxFrictionIterations},
+                               {"what", what},
+                               {"criterion", criterion},
+                               {"friction_residual", c.frictionResidual}},
+                              at));
   }
   continuation = fmt::format("friction threshold updated (loop {}, change {:.2e} of |LAGS_C|): Newton "
                              "iterations go on",

@@ -2,10 +2,10 @@
 
 #include "solver/contact/ContinuousFrictionExclusion.hpp"
 
+#include "messages/Messages.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 
 #include <cmath>
-#include <fmt/format.h>
 
 namespace stella::contact {
 
@@ -20,11 +20,7 @@ std::vector<std::vector<char>> excludedFrictionNodes(const ContactDefinition& de
     for (const std::string& group : c.frictionExcludedGroups) {
       const auto* nodes = def.mesh->nodeGroup(group);
       if (nodes == nullptr) {
-        throw UserError(
-            Diagnostic::fatal("CONTACT_1",
-                              fmt::format("SANS_GROUP_NO_FR: the mesh has no node group '{}'", group),
-                              c.frictionExcludedAt)
-                .withNote("create it with DEFI_GROUP CREA_GROUP_NO or give an existing group"));
+        throw UserError(msg::make("CONTACT_1.3", {{"group", group}}, c.frictionExcludedAt));
       }
       for (NodeId n : *nodes) {
         excluded[z][static_cast<std::size_t>(n)] = 1;
@@ -46,15 +42,8 @@ FrictionBasis excludedFrictionBasis(const ContinuousZone& z, const Point3& t1, c
   const double a2 = threeD ? dot(e, t2) : 0.0;
   const double size = std::hypot(a1, a2);
   if (!(size > 1e-8 * norm(e))) {
-    throw UserError(
-        Diagnostic::fatal(
-            "CONTACT_30",
-            fmt::format("DIRE_EXCL_FROT ({}, {}, {}) is normal to the contact surface at {}: it "
-                        "excludes no friction direction there",
-                        e[0], e[1], e[2], place),
-            z.excludedDirectionAt)
-            .withNote("give a direction of the tangent plane (global frame), e.g. the DX of a symmetry "
-                      "plane x = 0 (notice §4.7), or remove DIRE_EXCL_FROT to exclude friction entirely"));
+    throw UserError(msg::make("CONTACT_30", {{"e", e[0]}, {"e_2", e[1]}, {"e_3", e[2]}, {"place", place}},
+                              z.excludedDirectionAt));
   }
   if (threeD) {
     out.basis.row(0) = Eigen::Vector2d(-a2, a1).transpose() / size; // the tangent orthogonal to it

@@ -16,6 +16,7 @@
 #include "solver/contact/ContinuousContactConstraint.hpp"
 #include "solver/contact/ContinuousFrictionExclusion.hpp"
 
+#include "messages/Messages.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 
 #include <algorithm>

@@ -8,6 +8,8 @@
 // (ContinuousContactConstraint) and point (ContinuousPointContactConstraint) formulations share
 // raisePenalties(); each measures its own interpenetration (nodes or contact points).
 
+#include "messages/Messages.hpp"
+#include "solver/contact/ContactAlarm.hpp"
 #include "solver/contact/ContinuousAdaptation.hpp"
 #include "solver/contact/ContinuousContactConstraint.hpp"
 
@@ -66,15 +68,10 @@ std::vector<std::string> raisePenalties(const ContactDefinition& definition,
     double limit = std::numeric_limits<double>::infinity();
     if (policy && pene > policy->maxPenetration) {
       if (policy->action == FailurePolicy::Action::Stop) {
-        throw UserError(
-            Diagnostic::noConvergence(
-                "CONTACT_14",
-                fmt::format("interpenetration {:.3e} above PENE_MAXI = {} at INST {} in zone {} "
-                            "(DEFI_LIST_INST ECHEC EVENEMENT='INTERPENETRATION', ACTION='ARRET')",
-                            pene, policy->maxPenetration, time, z + 1),
-                definition.location)
-                .withNote("raise COEF_PENA_CONT, or use ACTION='ADAPT_COEF_PENA' to let it be raised "
-                          "automatically"));
+        throw UserError(msg::make(
+            "CONTACT_14",
+            {{"pene", pene}, {"max_penetration", policy->maxPenetration}, {"time", time}, {"z", z + 1}},
+            definition.location));
       }
       raise10 = true;
       limit = policy->maxCoefficient;
@@ -84,9 +81,10 @@ std::vector<std::string> raisePenalties(const ContactDefinition& definition,
     }
     const double next = std::min(raise * penalty, std::max(penalty, limit));
     if (next <= penalty) {
-      alarm(fmt::format("CONTACT_15: interpenetration {:.3e} above PENE_MAXI = {} in zone {} but "
-                        "COEF_PENA_CONT is already at COEF_MAXI = {}: the step is accepted",
-                        pene, policy->maxPenetration, z + 1, policy->maxCoefficient));
+      alarm(alarmLine(msg::make("CONTACT_15.2", {{"pene", pene},
+                                                 {"max_penetration", policy->maxPenetration},
+                                                 {"z", z + 1},
+                                                 {"max_coefficient", policy->maxCoefficient}})));
       continue;
     }
     factor[z] = next / zone.continuous.penalty;
@@ -94,9 +92,9 @@ std::vector<std::string> raisePenalties(const ContactDefinition& definition,
                                  pene, penalty, next));
   }
   if (!raised.empty() && policy) {
-    alarm(fmt::format("CONTACT_16: interpenetration above PENE_MAXI = {} at INST {} (EVENEMENT="
-                      "'INTERPENETRATION', ADAPT_COEF_PENA): {}; Newton iterations go on",
-                      policy->maxPenetration, time, fmt::join(raised, "; ")));
+    alarm(alarmLine(msg::make(
+        "CONTACT_16.2",
+        {{"max_penetration", policy->maxPenetration}, {"time", time}, {"join", fmt::join(raised, "; ")}})));
   }
   return raised;
 }

@@ -2,7 +2,9 @@
 
 #include "solver/contact/ContinuousPointContact.hpp"
 
+#include "messages/Messages.hpp"
 #include "solver/contact/CellProjection.hpp"
+#include "solver/contact/ContactAlarm.hpp"
 #include "solver/contact/ContactResultField.hpp"
 #include "solver/contact/ContinuousAdaptation.hpp"
 #include "solver/contact/ContinuousIntegrationRule.hpp"
@@ -295,17 +297,11 @@ void ContinuousPointContactConstraint::correct(const Eigen::VectorXd& u, Eigen::
 }
 
 void ContinuousPointContactConstraint::redundant(int multiplier) const {
-  throw UserError(
-      Diagnostic::fatal(
-          "CONTACT_11",
-          fmt::format("the contact conditions are redundant at INST {}: the weighted gap of slave "
-                      "node {} cannot move independently of the other nodes in contact",
-                      time_,
-                      definition_->mesh->nodeName(multiplierNode_[static_cast<std::size_t>(multiplier)])),
-          definition_->location)
-          .withNote("a slave node also held by DDL_IMPO or a symmetry condition in the normal direction, or "
-                    "more contact points than the master surface can hold, make the conditions redundant "
-                    "(notice §4.7): exclude it with SANS_GROUP_NO, or use INTEGRATION='AUTO'"));
+  throw UserError(msg::make(
+      "CONTACT_11.2",
+      {{"time", time_},
+       {"node_name", definition_->mesh->nodeName(multiplierNode_[static_cast<std::size_t>(multiplier)])}},
+      definition_->location));
 }
 
 bool ContinuousPointContactConstraint::acceptResolution(const Eigen::VectorXd& u) {
@@ -340,11 +336,7 @@ bool ContinuousPointContactConstraint::acceptResolution(const Eigen::VectorXd& u
     }
   }
   if (frozen > 0) {
-    noteAlarm(
-        fmt::format("CONTACT_27: {} contact point(s) cycled in and out of contact at INST {} (flip-flop): "
-                    "their status is frozen for the rest of the step (ADAPTATION='CYCLAGE'); check the "
-                    "contact pressure there",
-                    frozen, time_));
+    noteAlarm(alarmLine(msg::make("CONTACT_27.2", {{"frozen", frozen}, {"time", time_}})));
   }
   status_ = statusAt(u);
   ++statusIterations_;
@@ -353,16 +345,9 @@ bool ContinuousPointContactConstraint::acceptResolution(const Eigen::VectorXd& u
                   : c.iterationsPerNode ? c.statusIterationFactor * static_cast<int>(multiplierNode_.size())
                                         : c.maxStatusIterations;
   if (statusIterations_ > cap) {
-    throw UserError(
-        Diagnostic::noConvergence("CONTACT_26",
-                                  fmt::format("the contact status loop did not converge at INST {}: after {} "
-                                              "status iterations {} contact point(s) still change status",
-                                              time_, cap, changed),
-                                  definition_->location)
-            .withNote(newton
-                          ? "try ALGO_RESO_CONT='POINT_FIXE', or refine the list of instants"
-                          : "raise ITER_CONT_MAXI (or ITER_CONT_MULT with ITER_CONT_TYPE='MULT'), or refine "
-                            "the list of instants"));
+    throw UserError(msg::make("CONTACT_26.2", {{"time", time_}, {"cap", cap}, {"changed", changed}},
+                              definition_->location)
+                        .withNote(newton ? msg::text("CONTACT_26.n1") : msg::text("CONTACT_26.n2")));
   }
   lastStatus_ = status_;
   continuation_ =

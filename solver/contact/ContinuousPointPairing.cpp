@@ -4,6 +4,7 @@
 
 #include "solver/contact/ContinuousPointContact.hpp"
 
+#include "messages/Messages.hpp"
 #include "solver/contact/CellProjection.hpp"
 #include "solver/contact/ContinuousIntegrationRule.hpp"
 #include "solver/fem/ReferenceElement.hpp"
@@ -155,17 +156,14 @@ void ContinuousPointContactConstraint::checkPointCount() const {
     if (count > 0 && count < static_cast<long>(multipliers.size())) {
       const ContinuousZone& c = definition_->zones[z].continuous;
       throw UserError(
-          Diagnostic::fatal(
-              "CONTACT_INTEG_1",
-              fmt::format("STAT_NON_LINE CONTACT: INTEGRATION='{}'{} gives {} contact points on the "
-                          "slave cells of zone {}, fewer than their {} slave nodes: the contact "
-                          "pressures LAGS_C would not all be determined",
-                          integrationName(c.integration),
-                          c.integrationOrder > 0 ? fmt::format(" ORDRE_INT={}", c.integrationOrder) : "",
-                          count, z + 1, multipliers.size()),
-              c.integrationAt)
-              .withNote(
-                  "raise ORDRE_INT (GAUSS: 2 on SEG2 and QUAD4 cells, 3 on SEG3) or use INTEGRATION='AUTO'"));
+          msg::make("CONTACT_INTEG_1",
+                    {{"integration_name", integrationName(c.integration)},
+                     {"integration_order",
+                      c.integrationOrder > 0 ? fmt::format(" ORDRE_INT={}", c.integrationOrder) : ""},
+                     {"count", count},
+                     {"z", z + 1},
+                     {"multipliers_count", multipliers.size()}},
+                    c.integrationAt));
     }
   }
 }

@@ -2,6 +2,7 @@
 
 #include "solver/contact/DualContactConstraint.hpp"
 
+#include "messages/Messages.hpp"
 #include "solver/contact/SaddleStiffness.hpp"
 
 #include <cmath>
@@ -87,27 +88,18 @@ DualResult DualContactConstraint::solve(const ContactProblem& problem, Stiffness
                                                : solveActiveSet(problem, k, du0, options_, &start);
   } catch (const SingularContactError& e) {
     const auto& l = links_[static_cast<std::size_t>(rows_.link[static_cast<std::size_t>(e.link())])];
-    throw UserError(
-        Diagnostic::fatal("CONTACT_11",
-                          fmt::format("the active contact links are redundant at INST {}: adding slave node "
-                                      "{} (zone {}) makes the contact Schur complement singular",
-                                      time_, mesh.nodeName(l.slave), l.zone + 1),
-                          definition_->zones[static_cast<std::size_t>(l.zone)].location)
-            .withNote("a slave node also held by DDL_IMPO or a symmetry condition in the normal "
-                      "direction, or two zones constraining the same node, make links redundant "
-                      "(notice §4.7); STOP_SINGULIER='NON' drops such links"));
+    throw UserError(msg::make("CONTACT_11.3",
+                              {{"time", time_}, {"node_name", mesh.nodeName(l.slave)}, {"zone", l.zone + 1}},
+                              definition_->zones[static_cast<std::size_t>(l.zone)].location));
   } catch (const ContactNotConverged& e) {
-    throw UserError(
-        Diagnostic::noConvergence(
-            "CONTACT_12",
-            fmt::format("the {} contact algorithm did not converge at INST {} ({} iterations, maximum "
-                        "interpenetration {:.3e})",
-                        algorithmName(algorithm_), time_, e.result.iterations, e.result.maxInterpenetration),
-            definition_->location)
-            .withNote(algorithm_ == ContactAlgorithm::Gcp
-                          ? "raise ITER_GCP_MAXI or RESI_ABSO, or try RECH_LINEAIRE='NON_ADMISSIBLE' "
-                            "then PRE_COND='DIRICHLET' (notice §3.2.1.3)"
-                          : "raise ITER_CONT_MULT"));
+    throw UserError(msg::make("CONTACT_12",
+                              {{"algorithm_name", algorithmName(algorithm_)},
+                               {"time", time_},
+                               {"iterations", e.result.iterations},
+                               {"max_interpenetration", e.result.maxInterpenetration}},
+                              definition_->location)
+                        .withNote(algorithm_ == ContactAlgorithm::Gcp ? msg::text("CONTACT_12.n1")
+                                                                      : msg::text("CONTACT_12.n2")));
   }
 }
 

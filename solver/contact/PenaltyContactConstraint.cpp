@@ -2,6 +2,8 @@
 
 #include "solver/contact/PenaltyContactConstraint.hpp"
 
+#include "messages/Messages.hpp"
+#include "solver/contact/ContactAlarm.hpp"
 #include "solver/contact/SaddleStiffness.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 
@@ -246,13 +248,8 @@ void PenaltyContactConstraint::correct(const Eigen::VectorXd& u, Eigen::VectorXd
   try {
     result = solveActiveSet(problem, k, Eigen::VectorXd::Zero(ddu.size()), options);
   } catch (const ContactNotConverged& e) {
-    throw UserError(
-        Diagnostic::noConvergence("CONTACT_17",
-                                  fmt::format("the statuses of the penalised contact links did not converge "
-                                              "at INST {} ({} iterations on {} open links)",
-                                              time_, e.result.iterations, n),
-                                  definition_->location)
-            .withNote("raise ITER_CONT_MULT"));
+    throw UserError(msg::make("CONTACT_17", {{"time", time_}, {"iterations", e.result.iterations}, {"n", n}},
+                              definition_->location));
   }
   addContactIterations(result.iterations);
   if (result.lambda.size() == 0 || result.lambda.cwiseAbs().maxCoeff() == 0.0) {
@@ -326,14 +323,9 @@ bool PenaltyContactConstraint::acceptResolution(const Eigen::VectorXd& u) {
     return true;
   }
   if (policy_->action == FailurePolicy::Action::Stop) {
-    throw UserError(
-        Diagnostic::noConvergence("CONTACT_14",
-                                  fmt::format("interpenetration {:.3e} above PENE_MAXI = {} at INST {} "
-                                              "(DEFI_LIST_INST ECHEC EVENEMENT='INTERPENETRATION', "
-                                              "ACTION='ARRET')",
-                                              pene, policy_->maxPenetration, time_),
-                                  definition_->location)
-            .withNote("raise E_N, or use ACTION='ADAPT_COEF_PENA' to let it be raised automatically"));
+    throw UserError(msg::make("CONTACT_14.2",
+                              {{"pene", pene}, {"max_penetration", policy_->maxPenetration}, {"time", time_}},
+                              definition_->location));
   }
   const double before = parameters_.normalPenalty.size() > 0 ? parameters_.normalPenalty.maxCoeff() : 0.0;
   factor_ *= 10.0;
@@ -341,14 +333,13 @@ bool PenaltyContactConstraint::acceptResolution(const Eigen::VectorXd& u) {
   const double after = parameters_.normalPenalty.size() > 0 ? parameters_.normalPenalty.maxCoeff() : 0.0;
   if (after <= before) {
     factor_ /= 10.0;
-    noteAlarm(fmt::format("CONTACT_15: interpenetration {:.3e} above PENE_MAXI = {} but E_N is already at "
-                          "COEF_MAXI = {}: the step is accepted",
-                          pene, policy_->maxPenetration, policy_->maxCoefficient));
+    noteAlarm(alarmLine(msg::make("CONTACT_15", {{"pene", pene},
+                                                 {"max_penetration", policy_->maxPenetration},
+                                                 {"max_coefficient", policy_->maxCoefficient}})));
     return true;
   }
-  noteAlarm(fmt::format("CONTACT_16: interpenetration {:.3e} above PENE_MAXI = {}: E_N multiplied by 10 "
-                        "(now {:.3e}), Newton iterations go on",
-                        pene, policy_->maxPenetration, after));
+  noteAlarm(alarmLine(msg::make(
+      "CONTACT_16", {{"pene", pene}, {"max_penetration", policy_->maxPenetration}, {"after", after}})));
   return false;
 }
 

@@ -1,6 +1,7 @@
 #include "RealFunction.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -37,14 +38,13 @@ double TabulatedFunction::evaluate(std::span<const double> values) const {
     if (e == Extension::Linear) {
       return interpolate(segment, x);
     }
-    throw UserError(
-        Diagnostic::fatal("FUNCTION_1",
-                          fmt::format("the function {} is evaluated at {} = {}, {} its domain [{}, {}]",
-                                      name.empty() ? "(unnamed)" : name, parameter_, x,
-                                      leftSide ? "left of" : "right of", x_.front(), x_.back()))
-            .withNote(fmt::format("extend it with {}='CONSTANT' or 'LINEAIRE' in DEFI_FONCTION, or widen "
-                                  "its abscissas",
-                                  leftSide ? "PROL_GAUCHE" : "PROL_DROITE")));
+    throw UserError(msg::make("FUNCTION_1", {{"empty", name.empty() ? "(unnamed)" : name},
+                                             {"parameter", parameter_},
+                                             {"x", x},
+                                             {"left_side", leftSide ? "left of" : "right of"},
+                                             {"x_2", x_.front()},
+                                             {"x_3", x_.back()},
+                                             {"left_side_2", leftSide ? "PROL_GAUCHE" : "PROL_DROITE"}}));
   };
   if (x < x_.front()) {
     return outside(left, true);

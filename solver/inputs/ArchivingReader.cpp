@@ -4,6 +4,7 @@
 
 #include "catalog/KeywordTree.hpp"
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/functions/RealFunction.hpp"
 
@@ -27,8 +28,7 @@ ArchiveSelection readArchiveSelection(const KeywordTree& statNonLine) {
   }
   const auto step = a.integerOr("PAS_ARCH", 1);
   if (step < 1) {
-    throw UserError(
-        Diagnostic::fatal("SNL_6", "ARCHIVAGE PAS_ARCH must be at least 1", a.locationOf("PAS_ARCH")));
+    throw UserError(msg::make("SNL_6", {}, a.locationOf("PAS_ARCH")));
   }
   return ArchiveSelection::every(static_cast<int>(step));
 }

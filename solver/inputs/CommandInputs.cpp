@@ -3,6 +3,7 @@
 #include "solver/inputs/CommandInputs.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/model/RepeatedConditions.hpp"
 
@@ -19,24 +20,18 @@ std::vector<Excitation> readExcitations(const KeywordTree& keywords) {
     e.load = conceptData<MechanicalLoad>(charge);
     e.kinematic = conceptData<KinematicLoad>(charge);
     if (!e.load && !e.kinematic) {
-      throw UserError(Diagnostic::fatal("LOAD_9",
-                                        fmt::format("CHARGE={} is not a mechanical load", charge->name),
-                                        occ.locationOf("CHARGE"))
-                          .withNote("contact definitions (DEFI_CONTACT) go in CONTACT=, not in EXCIT"));
+      throw UserError(msg::make("LOAD_9", {{"name", charge->name}}, occ.locationOf("CHARGE")));
     }
     if (occ.has("FONC_MULT")) {
       auto f = occ.conceptValue("FONC_MULT");
       e.multiplier = conceptData<RealFunction>(f);
       if (!e.multiplier || e.multiplier->parameters().size() != 1) {
-        throw UserError(Diagnostic::fatal(
-            "LOAD_10", fmt::format("FONC_MULT={} must be a function of one parameter (INST)", f->name),
-            occ.locationOf("FONC_MULT")));
+        throw UserError(msg::make("LOAD_10", {{"name", f->name}}, occ.locationOf("FONC_MULT")));
       }
     }
     if (occ.text("TYPE_CHARGE") != "FIXE_CSTE") {
-      throw UserError(Diagnostic::fatal(
-          "LOAD_4", fmt::format("TYPE_CHARGE='{}' is not implemented yet", occ.text("TYPE_CHARGE")),
-          occ.locationOf("TYPE_CHARGE")));
+      throw UserError(
+          msg::make("LOAD_4", {{"text", occ.text("TYPE_CHARGE")}}, occ.locationOf("TYPE_CHARGE")));
     }
     loads.push_back({e.load, e.kinematic, e.multiplier.get(), charge->name, occ.locationOf("CHARGE")});
     out.push_back(std::move(e));
@@ -57,15 +52,12 @@ std::shared_ptr<const Model> readModel(const KeywordTree& keywords) {
 
 std::shared_ptr<const MaterialField> readMaterialField(const KeywordTree& keywords, const Model& model) {
   if (!keywords.has("CHAM_MATER")) {
-    throw UserError(Diagnostic::fatal("MATER_9", "CHAM_MATER is missing: the model's cells need a material",
-                                      keywords.location())
-                        .withNote("build one with AFFE_MATERIAU and pass CHAM_MATER=..."));
+    throw UserError(msg::make("MATER_9", {}, keywords.location()));
   }
   auto field = conceptData<MaterialField>(keywords.conceptValue("CHAM_MATER"));
   STELLA_ASSERT(field != nullptr, "CHAM_MATER holds no material field");
   if (field->mesh != model.mesh) {
-    throw UserError(Diagnostic::fatal("MATER_9", "CHAM_MATER was built on another mesh than the model's",
-                                      keywords.locationOf("CHAM_MATER")));
+    throw UserError(msg::make("MATER_9.2", {}, keywords.locationOf("CHAM_MATER")));
   }
   return field;
 }
@@ -111,20 +103,11 @@ linalg::SolverOptions readSolverOptions(const KeywordTree& keywords) {
   const std::string method = s.text("METHODE");
   auto m = linalg::solverMethodFromName(method);
   if (!m) {
-    throw UserError(
-        Diagnostic::fatal("SOLVE_5", fmt::format("SOLVEUR METHODE='{}' is not implemented yet", method),
-                          s.locationOf("METHODE"))
-            .withNote("use METHODE='MUMPS' (the default), 'MULT_FRONT', 'LDLT', 'GCPC' or 'PETSC'"));
+    throw UserError(msg::make("SOLVE_5", {{"method", method}}, s.locationOf("METHODE")));
   }
   if (*m == linalg::SolverMethod::Petsc && !linalg::petscAvailable()) {
     // RUN_8, an id about the machine: the study is valid, this build lacks the PETSc worker
-    throw UserError(
-        Diagnostic::fatal("RUN_8",
-                          "SOLVEUR METHODE='PETSC' is not available: this stella was "
-                          "built without PETSc",
-                          s.locationOf("METHODE"))
-            .withNote("install the Debian package petsc-dev (tools/install-deps) and rebuild, or use "
-                      "METHODE='MUMPS' or 'GCPC'"));
+    throw UserError(msg::make("RUN_8", {}, s.locationOf("METHODE")));
   }
   o.method = *m;
   o.renumbering = s.textOr("RENUM", o.renumbering);

@@ -3,6 +3,7 @@
 #include "solver/inputs/ElementCharacteristicsReader.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/inputs/Selection.hpp"
 #include "solver/model/Model.hpp"
@@ -21,11 +22,7 @@ const char* const refusedFactors[] = {"POUTRE", "BARRE",    "COQUE",  "CABLE",
 void refuseUnimplemented(const KeywordTree& keywords) {
   for (const char* key : refusedFactors) {
     if (keywords.has(key)) {
-      throw UserError(Diagnostic::fatal("CARA_1",
-                                        fmt::format("AFFE_CARA_ELEM {} is not implemented yet", key),
-                                        keywords.locationOf(key))
-                          .withNote("implemented: DISCRET and DISCRET_2D with CARA='K_T_D_N' (springs on "
-                                    "POI1 cells carrying 'DIS_T' / '2D_DIS_T')"));
+      throw UserError(msg::make("CARA_1", {{"key", key}}, keywords.locationOf(key)));
     }
   }
 }
@@ -55,32 +52,24 @@ std::vector<CellId> discreteCells(const Model& model, const KeywordTree& occ) {
 std::array<double, 3> stiffnessOf(const KeywordTree& occ, const std::string& keyword, int components) {
   const std::string cara = occ.text("CARA");
   if (cara != "K_T_D_N") {
-    throw UserError(Diagnostic::fatal("CARA_1",
-                                      fmt::format("{} CARA='{}' is not implemented yet", keyword, cara),
-                                      occ.locationOf("CARA"))
-                        .withNote("implemented: CARA='K_T_D_N' (diagonal translational stiffness of a "
-                                  "spring on a POI1 cell)"));
+    throw UserError(msg::make("CARA_1.2", {{"keyword", keyword}, {"cara", cara}}, occ.locationOf("CARA")));
   }
   if (occ.has("AMOR_HYST")) {
-    throw UserError(Diagnostic::fatal("CARA_1", fmt::format("{} AMOR_HYST is not implemented yet", keyword),
-                                      occ.locationOf("AMOR_HYST")));
+    throw UserError(msg::make("CARA_1.3", {{"keyword", keyword}}, occ.locationOf("AMOR_HYST")));
   }
   const auto vale = occ.reals("VALE");
   if (static_cast<int>(vale.size()) != components) {
-    throw UserError(Diagnostic::fatal("CARA_2",
-                                      fmt::format("{} CARA='K_T_D_N' needs {} values in VALE, got {}",
-                                                  keyword, components, vale.size()),
-                                      occ.locationOf("VALE"))
-                        .withNote(components == 3 ? "VALE=(KX, KY, KZ)" : "VALE=(KX, KY)"));
+    throw UserError(msg::make("CARA_2",
+                              {{"keyword", keyword}, {"components", components}, {"vale_count", vale.size()}},
+                              occ.locationOf("VALE"))
+                        .withNote(components == 3 ? msg::text("CARA_2.n1") : msg::text("CARA_2.n2")));
   }
   std::array<double, 3> k{};
   for (int c = 0; c < components; ++c) {
     const double v = vale[static_cast<std::size_t>(c)];
     if (v < 0.0) {
       throw UserError(
-          Diagnostic::fatal("CARA_4", fmt::format("{} stiffness K{} = {} is negative", keyword, "XYZ"[c], v),
-                            occ.locationOf("VALE"))
-              .withNote("a spring stiffness is >= 0"));
+          msg::make("CARA_4", {{"keyword", keyword}, {"value", "XYZ"[c]}, {"v", v}}, occ.locationOf("VALE")));
     }
     k[static_cast<std::size_t>(c)] = v;
   }
@@ -91,23 +80,19 @@ void readDiscrete(const Model& model, const KeywordTree& keywords, const char* k
                   std::map<CellId, std::array<double, 3>>& stiffness) {
   for (const KeywordTree& occ : keywords.occurrences(keyword)) {
     if (model.components != components) {
-      throw UserError(
-          Diagnostic::fatal("CARA_3",
-                            fmt::format("{} applies to {} models, the model is {}", keyword,
-                                        components == 3 ? "3D ('DIS_T')" : "2D ('2D_DIS_T')",
-                                        model.components == 3 ? "3D" : "2D"),
-                            occ.location())
-              .withNote(components == 3 ? "for a 2D model use DISCRET_2D" : "for a 3D model use DISCRET"));
+      throw UserError(msg::make("CARA_3",
+                                {{"keyword", keyword},
+                                 {"components", components == 3 ? "3D ('DIS_T')" : "2D ('2D_DIS_T')"},
+                                 {"components_2", model.components == 3 ? "3D" : "2D"}},
+                                occ.location())
+                          .withNote(components == 3 ? msg::text("CARA_3.n1") : msg::text("CARA_3.n2")));
     }
     const auto k = stiffnessOf(occ, keyword, components);
     const auto cells = discreteCells(model, occ);
     if (cells.empty()) {
-      throw UserError(
-          Diagnostic::fatal("CARA_3",
-                            fmt::format("{}: the selection holds no discrete element of the model", keyword),
-                            occ.location())
-              .withNote(fmt::format("assign MODELISATION='{}' to its POI1 cells in AFFE_MODELE",
-                                    components == 3 ? "DIS_T" : "2D_DIS_T")));
+      throw UserError(msg::make(
+          "CARA_3.2", {{"keyword", keyword}, {"components", components == 3 ? "DIS_T" : "2D_DIS_T"}},
+          occ.location()));
     }
     for (CellId c : cells) {
       stiffness[c] = k; // a later occurrence overrides an earlier one, as in code_aster

@@ -5,6 +5,7 @@
 #include "solver/post/TestReport.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -40,11 +41,7 @@ std::size_t singleNodeOfGroup(const Mesh& mesh, const std::string& group, const 
   const auto* nodes = &nodeGroupOrThrow(mesh, group, occ, "GROUP_NO");
   if (nodes->size() != 1) {
     throw UserError(
-        Diagnostic::fatal("RESU_4",
-                          fmt::format("GROUP_NO '{}' holds {} nodes; one node is needed to test a value",
-                                      group, nodes->size()),
-                          occ.locationOf("GROUP_NO"))
-            .withNote("use NOEUD, a group of one node, or TYPE_TEST='MIN', 'MAX', 'SOMM' or 'SOMM_ABS'"));
+        msg::make("RESU_4", {{"group", group}, {"nodes_count", nodes->size()}}, occ.locationOf("GROUP_NO")));
   }
   return static_cast<std::size_t>(nodes->front());
 }
@@ -74,9 +71,7 @@ EntitySelection cellNodeEntities(const Mesh& mesh, const Field& field, const std
   }
   s.single = s.entities.size() == 1 && !occ.has("TYPE_TEST");
   if (s.entities.empty()) {
-    throw UserError(
-        Diagnostic::fatal("RESU_5", "no cell of the selection has the node(s) given", occ.location())
-            .withNote("give MAILLE (or GROUP_MA) and one of its nodes with NOEUD"));
+    throw UserError(msg::make("RESU_5", {}, occ.location()));
   }
   return s;
 }
@@ -97,9 +92,9 @@ const ResultStep& selectStep(const Result& result, const std::string& resultName
     step = &result.steps.back();
   }
   if (step == nullptr) {
-    throw UserError(Diagnostic::fatal("RESU_1", fmt::format("result {} has no step at {}", resultName, what),
-                                      occ.location())
-                        .withNote(fmt::format("its stored steps (NUME_ORDRE, INST): {}", stepList(result))));
+    throw UserError(msg::make("RESU_1",
+                              {{"result_name", resultName}, {"what", what}, {"step_list", stepList(result)}},
+                              occ.location()));
   }
   return *step;
 }
@@ -112,13 +107,12 @@ const Field& selectField(const ResultStep& step, const std::string& resultName, 
     for (const auto& [n, v] : step.fields) {
       names.push_back(n);
     }
-    throw UserError(
-        Diagnostic::fatal(
-            "RESU_2",
-            fmt::format("result {} has no field {} at NUME_ORDRE {}", resultName, fieldName, step.number),
-            occ.locationOf("NOM_CHAM"))
-            .withNote(fmt::format("fields stored there: {}; compute others with CALC_CHAMP",
-                                  names.empty() ? "none" : fmt::format("{}", fmt::join(names, ", ")))));
+    throw UserError(msg::make("RESU_2",
+                              {{"result_name", resultName},
+                               {"field_name", fieldName},
+                               {"number", step.number},
+                               {"empty", names.empty() ? "none" : fmt::format("{}", fmt::join(names, ", "))}},
+                              occ.locationOf("NOM_CHAM")));
   }
   return *f;
 }
@@ -127,10 +121,10 @@ std::size_t selectComponent(const Field& field, const std::string& fieldName, co
                             const KeywordTree& occ) {
   auto c = field.componentIndex(component);
   if (!c) {
-    throw UserError(Diagnostic::fatal("RESU_3",
-                                      fmt::format("field {} has no component {}", fieldName, component),
-                                      occ.locationOf("NOM_CMP"))
-                        .withNote(fmt::format("its components: {}", fmt::join(field.components(), ", "))));
+    throw UserError(msg::make(
+        "RESU_3",
+        {{"field_name", fieldName}, {"component", component}, {"join", fmt::join(field.components(), ", ")}},
+        occ.locationOf("NOM_CMP")));
   }
   return *c;
 }
@@ -189,23 +183,19 @@ EntitySelection selectEntities(const Mesh& mesh, const Field& field, const Keywo
   }
   if (occ.has("POINT")) {
     if (cells.size() != 1) {
-      throw UserError(Diagnostic::fatal(
-                          "RESU_4", fmt::format("POINT needs one cell; the selection holds {}", cells.size()),
-                          occ.locationOf("POINT"))
-                          .withNote("use MAILLE, or a GROUP_MA of one cell"));
+      throw UserError(msg::make("RESU_4.2", {{"cells_count", cells.size()}}, occ.locationOf("POINT")));
     }
     const auto c = static_cast<std::size_t>(cells.front());
     const auto p = occ.integer("POINT");
     if (c >= field.cellCount() || p < 1 || p > field.pointCount(c)) {
-      throw UserError(Diagnostic::fatal(
-          "RESU_5",
-          fmt::format("cell {} has {} point(s) in this field; POINT={} does not exist",
-                      mesh.cellName(cells.front()), c < field.cellCount() ? field.pointCount(c) : 0, p),
-          occ.locationOf("POINT")));
+      throw UserError(msg::make("RESU_5.2",
+                                {{"cell_name", mesh.cellName(cells.front())},
+                                 {"c", c < field.cellCount() ? field.pointCount(c) : 0},
+                                 {"p", p}},
+                                occ.locationOf("POINT")));
     }
     if (occ.integerOr("SOUS_POINT", 1) != 1) {
-      throw UserError(Diagnostic::fatal("RESU_5", "SOUS_POINT other than 1 does not exist on solid elements",
-                                        occ.locationOf("SOUS_POINT")));
+      throw UserError(msg::make("RESU_5.3", {}, occ.locationOf("SOUS_POINT")));
     }
     return {{field.firstPoint(c) + static_cast<std::size_t>(p - 1)},
             true,
@@ -232,8 +222,7 @@ double reduceValues(const Field& field, std::size_t component, const std::vector
     }
   }
   if (values.empty()) {
-    throw UserError(
-        Diagnostic::fatal("RESU_6", "the selection holds no value of the component", occ.location()));
+    throw UserError(msg::make("RESU_6", {}, occ.location()));
   }
   return reduceByTestType(type, values);
 }

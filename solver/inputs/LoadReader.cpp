@@ -3,6 +3,7 @@
 #include "solver/inputs/LoadReader.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/inputs/Selection.hpp"
 #include "solver/model/RigidRelations.hpp"
 
@@ -19,10 +20,11 @@ const char* const otherDofs[] = {"DRX",     "DRY",     "DRZ",  "GRX",   "PRES", 
                                  "LAGS_F1", "LAGS_F2", "DNOR", "DRNOR", "DTAN"};
 
 UserError missingComponent(const Model& model, const std::string& name, const SourceLocation& at) {
-  return UserError(
-      Diagnostic::fatal("LOAD_1", fmt::format("the model has no component {} on its nodes", name), at)
-          .withNote(fmt::format("its nodes carry {}{}", fmt::join(model.componentNames(), ", "),
-                                name == "DZ" ? " (a 2D model has no DZ)" : "")));
+  return UserError(msg::make("LOAD_1",
+                             {{"name", name},
+                              {"join", fmt::join(model.componentNames(), ", ")},
+                              {"name_2", name == "DZ" ? " (a 2D model has no DZ)" : ""}},
+                             at));
 }
 
 int componentOrThrow(const Model& model, const std::string& name, const SourceLocation& at) {
@@ -46,11 +48,10 @@ std::vector<CellId> cellsOfKind(const Model& model, const KeywordTree& occ, Elem
                            ? (model.components == 2 ? "edge (SEG) cells" : "face (TRIA, QUAD) cells")
                            : "volume cells";
     throw UserError(
-        Diagnostic::fatal("LOAD_3",
-                          fmt::format("{}: the selected cells include no {} of the model", keyword, what),
-                          occ.location())
-            .withNote("check the group: it must hold cells the model (AFFE_MODELE) carries as " +
-                      std::string(kind == ElementKind::Skin ? "skin elements" : "volume elements")));
+        msg::make("LOAD_3", {{"keyword", keyword}, {"what", what}}, occ.location())
+            .withNote(msg::text(
+                "LOAD_3.n3",
+                {{"kind", std::string(kind == ElementKind::Skin ? "skin elements" : "volume elements")}})));
   }
   return out;
 }
@@ -71,9 +72,7 @@ std::array<double, 3> forceVector(const Model& model, const KeywordTree& occ) {
 
 void readImposed(const Model& model, const KeywordTree& occ, const char* keyword, MechanicalLoad& load) {
   if (occ.has("BLOCAGE")) {
-    throw UserError(
-        Diagnostic::fatal("LOAD_4", "DDL_IMPO BLOCAGE is not implemented yet", occ.locationOf("BLOCAGE"))
-            .withNote("give DX=0, DY=0 (, DZ=0)"));
+    throw UserError(msg::make("LOAD_4.2", {}, occ.locationOf("BLOCAGE")));
   }
   const auto components = imposedComponents(model, occ);
   for (NodeId n : modelNodes(model, occ)) {
@@ -98,21 +97,16 @@ void readLiaisonDdl(const Model& model, const KeywordTree& occ, MechanicalLoad& 
   const auto dofs = occ.texts("DDL");
   const auto coefs = occ.reals("COEF_MULT");
   if (nodes.size() != dofs.size() || nodes.size() != coefs.size()) {
-    throw UserError(
-        Diagnostic::fatal("LOAD_5",
-                          fmt::format("LIAISON_DDL needs as many nodes as DDL and COEF_MULT values (got "
-                                      "{} nodes, {} DDL, {} COEF_MULT)",
-                                      nodes.size(), dofs.size(), coefs.size()),
-                          occ.location()));
+    throw UserError(msg::make(
+        "LOAD_5", {{"nodes_count", nodes.size()}, {"dofs_count", dofs.size()}, {"coefs_count", coefs.size()}},
+        occ.location()));
   }
   LinearRelation r;
   r.value = occ.real("COEF_IMPO");
   r.origin = "LIAISON_DDL";
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     if (!model.nodeActive(nodes[i])) {
-      throw UserError(Diagnostic::fatal(
-          "LOAD_2", fmt::format("node {} carries no element of the model", model.mesh->nodeName(nodes[i])),
-          occ.location()));
+      throw UserError(msg::make("LOAD_2", {{"node_name", model.mesh->nodeName(nodes[i])}}, occ.location()));
     }
     r.terms.push_back({nodes[i], componentOrThrow(model, dofs[i], occ.locationOf("DDL")), coefs[i]});
   }
@@ -141,9 +135,7 @@ void readForces(const Model& model, const KeywordTree& keywords, MechanicalLoad&
   for (const KeywordTree& occ : keywords.occurrences("FORCE_NODALE")) {
     for (const char* m : {"MX", "MY", "MZ", "ANGL_NAUT"}) {
       if (occ.has(m)) {
-        throw UserError(Diagnostic::fatal("LOAD_4", fmt::format("FORCE_NODALE {} is not implemented yet", m),
-                                          occ.locationOf(m))
-                            .withNote("the 3D, D_PLAN, C_PLAN and AXIS elements have no rotation"));
+        throw UserError(msg::make("LOAD_4.3", {{"m", m}}, occ.locationOf(m)));
       }
     }
     const auto f = forceVector(model, occ);
@@ -157,8 +149,7 @@ void readForces(const Model& model, const KeywordTree& keywords, MechanicalLoad&
   }
   for (const KeywordTree& occ : keywords.occurrences("PRES_REP")) {
     if (occ.has("CISA_2D")) {
-      throw UserError(
-          Diagnostic::fatal("LOAD_4", "PRES_REP CISA_2D is not implemented yet", occ.locationOf("CISA_2D")));
+      throw UserError(msg::make("LOAD_4.4", {}, occ.locationOf("CISA_2D")));
     }
     for (CellId c : cellsOfKind(model, occ, ElementKind::Skin, "PRES_REP")) {
       load.pressures.push_back({c, occ.real("PRES")});
@@ -168,11 +159,8 @@ void readForces(const Model& model, const KeywordTree& keywords, MechanicalLoad&
     for (const KeywordTree& occ : keywords.occurrences(key)) {
       const bool twoD = std::string(key) == "FORCE_CONTOUR";
       if (twoD != (model.components == 2)) {
-        throw UserError(Diagnostic::fatal("LOAD_3",
-                                          fmt::format("{} applies to {} models", key, twoD ? "2D" : "3D"),
-                                          occ.location())
-                            .withNote(twoD ? "on faces of a 3D model use FORCE_FACE"
-                                           : "on edges of a 2D model use FORCE_CONTOUR"));
+        throw UserError(msg::make("LOAD_3.2", {{"key", key}, {"two_d", twoD ? "2D" : "3D"}}, occ.location())
+                            .withNote(twoD ? msg::text("LOAD_3.n1") : msg::text("LOAD_3.n2")));
       }
       const auto f = forceVector(model, occ);
       for (CellId c : cellsOfKind(model, occ, ElementKind::Skin, key)) {
@@ -190,8 +178,7 @@ void readForces(const Model& model, const KeywordTree& keywords, MechanicalLoad&
     auto d = occ.reals("DIRECTION");
     const double norm = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     if (!(norm > 0.0)) {
-      throw UserError(
-          Diagnostic::fatal("LOAD_6", "PESANTEUR DIRECTION is the zero vector", occ.locationOf("DIRECTION")));
+      throw UserError(msg::make("LOAD_6", {}, occ.locationOf("DIRECTION")));
     }
     Gravity g;
     const double a = occ.real("GRAVITE") / norm;
@@ -211,12 +198,9 @@ std::vector<std::pair<int, double>> imposedComponents(const Model& model, const 
   std::vector<std::pair<int, double>> out;
   for (const char* name : otherDofs) {
     if (occ.has(name)) {
-      throw UserError(
-          Diagnostic::fatal("LOAD_1",
-                            fmt::format("the model has no component {}; imposing it is not possible", name),
-                            occ.locationOf(name))
-              .withNote(
-                  fmt::format("the nodes of this model carry {}", fmt::join(model.componentNames(), ", "))));
+      throw UserError(msg::make("LOAD_1.2",
+                                {{"name", name}, {"join", fmt::join(model.componentNames(), ", ")}},
+                                occ.locationOf(name)));
     }
   }
   for (const char* name : physicalDofs) {
@@ -231,18 +215,11 @@ std::vector<NodeId> modelNodes(const Model& model, const KeywordTree& occ) {
   auto nodes = selectNodes(*model.mesh, occ);
   for (NodeId n : nodes) {
     if (!model.nodeActive(n)) {
-      throw UserError(
-          Diagnostic::fatal("LOAD_2",
-                            fmt::format("node {} carries no element of the model, so it has no "
-                                        "displacement to impose or load",
-                                        model.mesh->nodeName(n)),
-                            occ.location())
-              .withNote(
-                  "check the group, or assign a modelisation to the cells around the node (AFFE_MODELE)"));
+      throw UserError(msg::make("LOAD_2.2", {{"node_name", model.mesh->nodeName(n)}}, occ.location()));
     }
   }
   if (nodes.empty()) {
-    throw UserError(Diagnostic::fatal("LOAD_2", "the selection holds no node", occ.location()));
+    throw UserError(msg::make("LOAD_2.3", {}, occ.location()));
   }
   return nodes;
 }
@@ -252,8 +229,7 @@ void readMechanicalLoad(const KeywordTree& keywords, MechanicalLoad& load) {
   for (const char* key : {"ROTATION", "ARETE_IMPO", "LIAISON_OBLIQUE", "LIAISON_GROUP", "LIAISON_MAIL",
                           "FORCE_ARETE", "FORCE_POUTRE", "FORCE_COQUE", "PRE_SIGM", "PRE_EPSI"}) {
     if (keywords.has(key)) {
-      throw UserError(Diagnostic::fatal(
-          "LOAD_4", fmt::format("AFFE_CHAR_MECA {} is not implemented yet", key), keywords.locationOf(key)));
+      throw UserError(msg::make("LOAD_4.5", {{"key", key}}, keywords.locationOf(key)));
     }
   }
   for (const KeywordTree& occ : keywords.occurrences("DDL_IMPO")) {
@@ -276,8 +252,7 @@ void readMechanicalLoad(const KeywordTree& keywords, MechanicalLoad& load) {
 
 void readKinematicLoad(const KeywordTree& keywords, KinematicLoad& load) {
   if (keywords.has("EVOL_IMPO")) {
-    throw UserError(Diagnostic::fatal("LOAD_4", "AFFE_CHAR_CINE EVOL_IMPO is not implemented yet",
-                                      keywords.locationOf("EVOL_IMPO")));
+    throw UserError(msg::make("LOAD_4.6", {}, keywords.locationOf("EVOL_IMPO")));
   }
   for (const KeywordTree& occ : keywords.occurrences("MECA_IMPO")) {
     const auto components = imposedComponents(*load.model, occ);

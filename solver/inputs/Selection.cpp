@@ -3,6 +3,7 @@
 #include "solver/inputs/Selection.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
@@ -50,10 +51,9 @@ const std::vector<CellId>& cellGroupOrThrow(const Mesh& mesh, const std::string&
                                             const KeywordTree& occurrence, const std::string& keyword) {
   const auto* cells = mesh.cellGroup(group);
   if (cells == nullptr) {
-    throw UserError(
-        Diagnostic::fatal("GROUP_1", fmt::format("the mesh has no cell group (GROUP_MA) '{}'", group),
-                          occurrence.locationOf(keyword))
-            .withNote(fmt::format("its cell groups are: {}", listNames(keysOf(mesh.cellGroups())))));
+    throw UserError(msg::make("GROUP_1",
+                              {{"group", group}, {"list_names", listNames(keysOf(mesh.cellGroups()))}},
+                              occurrence.locationOf(keyword)));
   }
   return *cells;
 }
@@ -66,10 +66,7 @@ const std::vector<NodeId>& nodeGroupOrThrow(const Mesh& mesh, const std::string&
     if (mesh.hasCellGroup(group)) {
       note += fmt::format("; '{}' is a cell group: use GROUP_MA, or DEFI_GROUP CREA_GROUP_NO", group);
     }
-    throw UserError(Diagnostic::fatal("GROUP_2",
-                                      fmt::format("the mesh has no node group (GROUP_NO) '{}'", group),
-                                      occurrence.locationOf(keyword))
-                        .withNote(note));
+    throw UserError(msg::make("GROUP_2", {{"group", group}}, occurrence.locationOf(keyword)).withNote(note));
   }
   return *nodes;
 }
@@ -78,8 +75,7 @@ NodeId nodeOrThrow(const Mesh& mesh, const std::string& name, const KeywordTree&
                    const std::string& keyword) {
   auto n = mesh.findNode(name);
   if (!n) {
-    throw UserError(Diagnostic::fatal("GROUP_3", fmt::format("the mesh has no node named '{}'", name),
-                                      occurrence.locationOf(keyword)));
+    throw UserError(msg::make("GROUP_3", {{"name", name}}, occurrence.locationOf(keyword)));
   }
   return *n;
 }
@@ -88,8 +84,7 @@ CellId cellOrThrow(const Mesh& mesh, const std::string& name, const KeywordTree&
                    const std::string& keyword) {
   auto c = mesh.findCell(name);
   if (!c) {
-    throw UserError(Diagnostic::fatal("GROUP_4", fmt::format("the mesh has no cell named '{}'", name),
-                                      occurrence.locationOf(keyword)));
+    throw UserError(msg::make("GROUP_4", {{"name", name}}, occurrence.locationOf(keyword)));
   }
   return *c;
 }

@@ -3,6 +3,7 @@
 #include "solver/inputs/StatNonLineInputs.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/functions/RealFunction.hpp"
 #include "solver/nonlinear/ResultFields.hpp"
@@ -15,8 +16,7 @@ namespace stella {
 namespace {
 
 [[noreturn]] void notImplemented(const KeywordTree& kw, const std::string& name, const std::string& what) {
-  throw UserError(Diagnostic::fatal("SNL_1", fmt::format("STAT_NON_LINE {} is not implemented yet", what),
-                                    kw.locationOf(name)));
+  throw UserError(msg::make("SNL_1", {{"what", what}}, kw.locationOf(name)));
 }
 
 Prediction readPrediction(const KeywordTree& nw, bool tangentMatrix) {
@@ -38,14 +38,11 @@ Prediction readPrediction(const KeywordTree& nw, bool tangentMatrix) {
 std::function<Eigen::VectorXd(double)> computedDisplacement(const KeywordTree& nw,
                                                             const MechanicalSystem& system) {
   if (!nw.has("EVOL_NOLI")) {
-    throw UserError(Diagnostic::fatal("SNL_7", "PREDICTION='DEPL_CALCULE' needs NEWTON/EVOL_NOLI",
-                                      nw.locationOf("PREDICTION"))
-                        .withNote("give the result whose displacement predicts each step: EVOL_NOLI=RES"));
+    throw UserError(msg::make("SNL_7", {}, nw.locationOf("PREDICTION")));
   }
   auto result = conceptData<Result>(nw.conceptValue("EVOL_NOLI"));
   if (!result || result->mesh.get() != system.model().mesh.get() || result->steps.empty()) {
-    throw UserError(Diagnostic::fatal("SNL_7", "NEWTON/EVOL_NOLI is not a result on the mesh of the model",
-                                      nw.locationOf("EVOL_NOLI")));
+    throw UserError(msg::make("SNL_7.2", {}, nw.locationOf("EVOL_NOLI")));
   }
   const SourceLocation at = nw.locationOf("EVOL_NOLI");
   const DofMap& dofs = system.dofs();
@@ -65,10 +62,7 @@ std::function<Eigen::VectorXd(double)> computedDisplacement(const KeywordTree& n
         }
       }
     }
-    throw UserError(Diagnostic::fatal(
-        "SNL_7",
-        fmt::format("NEWTON/EVOL_NOLI has no displacement at INST {:g} for PREDICTION='DEPL_CALCULE'", time),
-        at));
+    throw UserError(msg::make("SNL_7.3", {{"time", time}}, at));
   };
 }
 
@@ -79,7 +73,7 @@ void readLineSearch(const KeywordTree& kw, NewtonSettings& s) {
   const KeywordTree& ls = kw.occurrences("RECH_LINEAIRE").front();
   // METHODE: the catalogue implements 'CORDE' only (implemente=).
   if (kw.has("CONTACT")) {
-    notImplemented(kw, "RECH_LINEAIRE", "RECH_LINEAIRE with CONTACT");
+    notImplemented(kw, "RECH_LINEAIRE", msg::text("SNL_1.f1"));
   }
   s.lineSearch.enabled = true;
   s.lineSearch.maxIterations = static_cast<int>(ls.integer("ITER_LINE_MAXI"));
@@ -88,8 +82,7 @@ void readLineSearch(const KeywordTree& kw, NewtonSettings& s) {
   s.lineSearch.rhoMax = ls.real("RHO_MAX");
   s.lineSearch.rhoExcluded = ls.real("RHO_EXCL");
   if (!(s.lineSearch.rhoMin < s.lineSearch.rhoMax)) {
-    throw UserError(Diagnostic::fatal("SNL_10", "RECH_LINEAIRE: RHO_MIN must be smaller than RHO_MAX",
-                                      ls.locationOf("RHO_MIN")));
+    throw UserError(msg::make("SNL_10", {}, ls.locationOf("RHO_MIN")));
   }
 }
 
@@ -137,10 +130,8 @@ std::vector<double> readInstants(const KeywordTree& inc, std::optional<double> i
     const auto k = inc.integer(name);
     if (k < 0 || k >= static_cast<std::int64_t>(times.size())) {
       throw UserError(
-          Diagnostic::fatal("SNL_8",
-                            fmt::format("INCREMENT {}={} is outside the list of instants (0 to {})", name, k,
-                                        static_cast<int>(times.size()) - 1),
-                            inc.locationOf(name)));
+          msg::make("SNL_8", {{"name", name}, {"k", k}, {"times_count", static_cast<int>(times.size()) - 1}},
+                    inc.locationOf(name)));
     }
     return times[static_cast<std::size_t>(k)];
   };
@@ -164,8 +155,7 @@ std::vector<double> readInstants(const KeywordTree& inc, std::optional<double> i
     }
   }
   if (out.size() < 2) {
-    throw UserError(Diagnostic::fatal("SNL_2", "INCREMENT leaves fewer than two instants: no step to compute",
-                                      inc.location()));
+    throw UserError(msg::make("SNL_2", {}, inc.location()));
   }
   return out;
 }
@@ -199,12 +189,12 @@ std::optional<InitialResultStep> readInitialStep(const KeywordTree& kw,
       step = &result->steps.back();
     }
     if (step == nullptr) {
-      throw UserError(Diagnostic::fatal(
-          "SNL_9",
-          fmt::format("ETAT_INIT: {} has no step at {}", e.conceptValue("EVOL_NOLI")->name,
-                      e.has("NUME_ORDRE") ? fmt::format("NUME_ORDRE {}", e.integer("NUME_ORDRE"))
-                                          : fmt::format("INST {:g}", e.realOr("INST", 0.0))),
-          e.location()));
+      throw UserError(
+          msg::make("SNL_9",
+                    {{"name", e.conceptValue("EVOL_NOLI")->name},
+                     {"has", e.has("NUME_ORDRE") ? fmt::format("NUME_ORDRE {}", e.integer("NUME_ORDRE"))
+                                                 : fmt::format("INST {:g}", e.realOr("INST", 0.0))}},
+                    e.location()));
     }
     return InitialResultStep{result, step};
   }
@@ -218,15 +208,14 @@ MechanicalState stateFromResultStep(const InitialResultStep& initial, const Mech
                                     const MechanicalState& zero, const SourceLocation& at) {
   const Model& model = system.model();
   if (initial.result->mesh.get() != model.mesh.get()) {
-    throw UserError(
-        Diagnostic::fatal("SNL_9", "ETAT_INIT: the result is on another mesh than the model", at));
+    throw UserError(msg::make("SNL_9.2", {}, at));
   }
   MechanicalState s = zero;
   s.time = initial.step->time;
   if (const Field* d = initial.step->field("DEPL")) {
     if (d->entityCount() != static_cast<std::size_t>(model.mesh->nodeCount()) ||
         d->componentCount() < static_cast<std::size_t>(model.components)) {
-      throw UserError(Diagnostic::fatal("SNL_9", "ETAT_INIT: DEPL does not fit the model", at));
+      throw UserError(msg::make("SNL_9.3", {}, at));
     }
     s.displacement = displacementVector(*d, system.dofs());
   }
@@ -236,10 +225,10 @@ MechanicalState stateFromResultStep(const InitialResultStep& initial, const Mech
       return;
     }
     if (f->entityCount() != target.entityCount()) {
-      throw UserError(Diagnostic::fatal("SNL_9",
-                                        fmt::format("ETAT_INIT: {} has {} Gauss points, the model {}", name,
-                                                    f->entityCount(), target.entityCount()),
-                                        at));
+      throw UserError(msg::make(
+          "SNL_9.4",
+          {{"name", name}, {"entity_count", f->entityCount()}, {"entity_count_2", target.entityCount()}},
+          at));
     }
     const std::size_t nc = std::min(f->componentCount(), target.componentCount());
     for (std::size_t p = 0; p < target.entityCount(); ++p) {

@@ -6,6 +6,7 @@
 
 #include "catalog/KeywordTree.hpp"
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/functions/RealFunction.hpp"
 #include "solver/inputs/Selection.hpp"
@@ -47,8 +48,7 @@ Observations readObservations(const KeywordTree& kw, const Mesh& mesh) {
     item.initial = occ.text("OBSE_ETAT_INIT") == "OUI";
     item.every = static_cast<int>(occ.integerOr("PAS_OBSE", 0));
     if (occ.has("PAS_OBSE") && item.every < 1) {
-      throw UserError(Diagnostic::fatal("SNL_21", "OBSERVATION: PAS_OBSE must be at least 1",
-                                        occ.locationOf("PAS_OBSE")));
+      throw UserError(msg::make("SNL_21", {}, occ.locationOf("PAS_OBSE")));
     }
     if (occ.has("INST")) {
       item.instants = occ.reals("INST");

@@ -1,6 +1,7 @@
 #include "solver/inputs/TableFilter.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -103,8 +104,7 @@ std::vector<std::size_t> applyFilter(const Table::Column& col, const std::vector
     return kept;
   }
   if (f.has("VALE_C")) {
-    throw UserError(Diagnostic::fatal("TABLE_2", "FILTRE with VALE_C (complex values) is not implemented yet",
-                                      f.locationOf("VALE_C")));
+    throw UserError(msg::make("TABLE_2", {}, f.locationOf("VALE_C")));
   }
   for (std::size_t r : rows) {
     if (keepByComparison(crit, compareCell(col.cells[r], f))) {
@@ -125,10 +125,8 @@ std::vector<std::size_t> filterRows(const Table& table, const std::vector<Keywor
     const std::string para = f.text("NOM_PARA");
     const Table::Column* col = table.column(para);
     if (col == nullptr) {
-      throw UserError(
-          Diagnostic::fatal("TABLE_1", fmt::format("the table has no parameter '{}'", para),
-                            f.locationOf("NOM_PARA"))
-              .withNote(fmt::format("its parameters are: {}", fmt::join(table.columnNames(), ", "))));
+      throw UserError(msg::make("TABLE_1", {{"para", para}, {"join", fmt::join(table.columnNames(), ", ")}},
+                                f.locationOf("NOM_PARA")));
     }
     rows = applyFilter(*col, rows, f);
   }

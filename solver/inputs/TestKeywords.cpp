@@ -1,14 +1,14 @@
 #include "solver/inputs/TestKeywords.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 
 namespace stella {
 
 namespace {
 
 void refuse(const KeywordTree& kw, const std::string& name, const std::string& why) {
-  throw UserError(
-      Diagnostic::fatal("TEST_1", name + ": " + why + " is not implemented yet", kw.locationOf(name)));
+  throw UserError(msg::make("TEST_1", {{"name", name}, {"why", why}}, kw.locationOf(name)));
 }
 
 // The single real of VALE_CALC / VALE_CALC_I (or VALE_REFE / VALE_REFE_I).
@@ -17,7 +17,7 @@ std::optional<double> singleValue(const KeywordTree& kw, const std::string& real
   for (const std::string& name : {realName, intName}) {
     if (const SimpleKeyword* k = kw.simple(name)) {
       if (k->values.size() != 1) {
-        refuse(kw, name, "testing several values at once");
+        refuse(kw, name, msg::text("TEST_1.f1"));
       }
       return k->values.front().asReal();
     }
@@ -30,7 +30,7 @@ std::optional<double> singleValue(const KeywordTree& kw, const std::string& real
 ValueTest valueTestFromKeywords(const KeywordTree& kw, double computed, const std::string& legend) {
   for (const std::string name : {"VALE_CALC_C", "VALE_REFE_C", "VALE_CALC_K", "VALE_REFE_K"}) {
     if (kw.has(name)) {
-      refuse(kw, name, name.back() == 'C' ? "testing complex values" : "testing texts");
+      refuse(kw, name, name.back() == 'C' ? msg::text("TEST_1.f2") : msg::text("TEST_1.f3"));
     }
   }
   ValueTest t;

@@ -48,7 +48,7 @@ bool isFinsf(std::string_view t) {
 std::string_view blockToken(TextScanner& s, const char* block) {
   const auto t = s.next();
   if (t.empty()) {
-    s.fail(std::string("unexpected end of file inside a ") + block + " block (missing FINSF?)");
+    s.fail("MESHFILE_2.20", {{"block", block}});
   }
   return t;
 }
@@ -65,7 +65,7 @@ void readCoordinates(TextScanner& s, int dim, Mesh& mesh, std::unordered_map<std
       x[static_cast<std::size_t>(d)] = s.real("node coordinate");
     }
     if (byName.count(name) != 0) {
-      s.failContent("node " + name + " is defined twice");
+      s.failContent("MESHFILE_3.49", {{"name", name}});
     }
     byName.emplace(name, mesh.addNode(x, name));
   }
@@ -83,8 +83,9 @@ void readCells(TextScanner& s, CellType type, PendingNames& names, std::vector<P
     for (int i = 0; i < nodeCount(type); ++i) {
       const auto n = s.expect("node name of a cell");
       if (isFinsf(n)) {
-        s.fail("cell " + cellNames.back().first + " of type " + block + " has fewer than " +
-               std::to_string(nodeCount(type)) + " nodes");
+        s.fail("MESHFILE_2.21", {{"back", cellNames.back().first},
+                                 {"block", block},
+                                 {"node_count", std::to_string(nodeCount(type))}});
       }
       names.add(n, s.line());
     }
@@ -120,7 +121,7 @@ PendingGroup readGroup(TextScanner& s, bool cells) {
     }
   }
   if (g.name.empty()) {
-    s.fail(std::string("a ") + block + " block without a group name");
+    s.fail("MESHFILE_2.22", {{"block", block}});
   }
   return g;
 }
@@ -154,18 +155,17 @@ Mesh readAsterMesh(const std::filesystem::path& file) {
     } else if (const auto type = cellTypeFromName(t)) {
       readCells(s, *type, cellNodeNames, cells, cellNames);
     } else {
-      s.fail("unknown block '" + std::string(t.substr(0, 40)) +
-             "' (expected TITRE, COOR_2D, COOR_3D, a cell type, GROUP_MA, GROUP_NO or FIN)");
+      s.fail("MESHFILE_2.23", {{"substr", std::string(t.substr(0, 40))}});
     }
   }
   if (!sawFin) {
-    throwFileError("MESHFILE_2", file, "the file ends without FIN (truncated file?)", s.line());
+    throwFileError("MESHFILE_2", file, {}, s.line());
   }
   if (mesh.nodeCount() == 0) {
-    throwFileError("MESHFILE_3", file, "the mesh has no nodes (no COOR_2D/COOR_3D block)");
+    throwFileError("MESHFILE_3", file, {});
   }
   if (cells.empty()) {
-    throwFileError("MESHFILE_3", file, "the mesh has no cells");
+    throwFileError("MESHFILE_3.2", file, {});
   }
   mesh.setDimension(dim == 3 ? 3 : 2);
   std::unordered_map<std::string, CellId> cellByName;
@@ -177,16 +177,14 @@ Mesh readAsterMesh(const std::filesystem::path& file) {
       const std::size_t k = cells[c].firstName + static_cast<std::size_t>(i);
       const auto it = nodeByName.find(std::string(cellNodeNames.at(k)));
       if (it == nodeByName.end()) {
-        throwFileError("MESHFILE_3", file,
-                       "cell " + cellNames[c].first + " uses node " + std::string(cellNodeNames.at(k)) +
-                           ", which is not defined",
+        throwFileError("MESHFILE_3.3", file,
+                       {{"cell_names", cellNames[c].first}, {"at", std::string(cellNodeNames.at(k))}},
                        cellNodeNames.lines[k]);
       }
       nodes[i] = it->second;
     }
     if (!cellByName.emplace(cellNames[c].first, static_cast<CellId>(c)).second) {
-      throwFileError("MESHFILE_3", file, "cell " + cellNames[c].first + " is defined twice",
-                     cellNames[c].second);
+      throwFileError("MESHFILE_3.4", file, {{"cell_names", cellNames[c].first}}, cellNames[c].second);
     }
     mesh.addCell(cells[c].type, std::span<const NodeId>(nodes, static_cast<std::size_t>(n)),
                  cellNames[c].first);
@@ -198,15 +196,13 @@ Mesh readAsterMesh(const std::filesystem::path& file) {
       if (g.cells) {
         const auto it = cellByName.find(member);
         if (it == cellByName.end()) {
-          throwFileError("MESHFILE_3", file,
-                         "group " + g.name + " lists cell " + member + ", which is not defined", line);
+          throwFileError("MESHFILE_3.5", file, {{"name", g.name}, {"member", member}}, line);
         }
         ids.push_back(it->second);
       } else {
         const auto it = nodeByName.find(member);
         if (it == nodeByName.end()) {
-          throwFileError("MESHFILE_3", file,
-                         "group " + g.name + " lists node " + member + ", which is not defined", line);
+          throwFileError("MESHFILE_3.6", file, {{"name", g.name}, {"member", member}}, line);
         }
         ids.push_back(it->second);
       }

@@ -98,7 +98,7 @@ public:
     }
     if (line.find('\0') != std::string_view::npos) {
       ++line_;
-      fail("a NUL byte in a text file (binary or damaged file?)");
+      fail("MESHFILE_2.14", {});
     }
     pos_ = stop + 1;
     ++line_;
@@ -108,7 +108,7 @@ public:
   std::string_view expectLine(const std::string& what) {
     std::string_view line;
     if (!next(line)) {
-      fail("unexpected end of file, expected " + what);
+      fail("MESHFILE_2.4", {{"what", what}});
     }
     return line;
   }
@@ -125,13 +125,15 @@ public:
           continue;
         }
         if (static_cast<std::int64_t>(values.size()) == n) {
-          fail("more values than expected on the line (" + what + ")");
+          fail("MESHFILE_2.15", {{"what", what}});
         }
         std::int64_t v = 0;
         const auto [end, ec] = std::from_chars(field.data(), field.data() + field.size(), v);
         if (ec != std::errc() || end != field.data() + field.size()) {
-          fail("expected " + what + " (an integer in columns " + std::to_string(at + 1) + "-" +
-               std::to_string(at + 8) + "), found '" + std::string(field) + "'");
+          fail("MESHFILE_2.16", {{"what", what},
+                                 {"at", std::to_string(at + 1)},
+                                 {"at_2", std::to_string(at + 8)},
+                                 {"field", std::string(field)}});
         }
         values.push_back(v);
       }
@@ -155,7 +157,7 @@ public:
           break;
         }
         if (static_cast<std::int64_t>(values.size()) == n) {
-          fail("more values than expected on the line (" + what + ")");
+          fail("MESHFILE_2.15", {{"what", what}});
         }
         values.push_back(real(line.substr(at, end - at), what));
         at = end;
@@ -182,14 +184,16 @@ public:
   // A count read from the file: at most what the file could hold (guards allocations).
   std::int64_t count(std::int64_t value, const std::string& what) const {
     if (value < 0 || value > static_cast<std::int64_t>(text_.size())) {
-      failContent(what + " is " + std::to_string(value) + ", impossible for this file");
+      failContent("MESHFILE_3.43", {{"what", what}, {"value", std::to_string(value)}});
     }
     return value;
   }
 
-  [[noreturn]] void fail(const std::string& what) const { throwFileError("MESHFILE_2", file_, what, line_); }
-  [[noreturn]] void failContent(const std::string& what) const {
-    throwFileError("MESHFILE_3", file_, what, line_);
+  [[noreturn]] void fail(std::string_view key, msg::Args args = {}) const {
+    throwFileError(key, file_, args, line_);
+  }
+  [[noreturn]] void failContent(std::string_view key, msg::Args args = {}) const {
+    throwFileError(key, file_, args, line_);
   }
   int line() const { return line_; }
   const std::filesystem::path& file() const { return file_; }
@@ -211,7 +215,7 @@ private:
     char* end = nullptr;
     const double v = std::strtod(s.c_str(), &end);
     if (end != s.c_str() + s.size() || !std::isfinite(v)) {
-      fail("expected " + what + " (a finite real), found '" + std::string(token) + "'");
+      fail("MESHFILE_2.17", {{"what", what}, {"token", std::string(token)}});
     }
     return v;
   }
@@ -244,14 +248,14 @@ struct GibiFile {
 std::int64_t numberAfter(GibiLines& in, std::string_view line, std::string_view label) {
   const auto at = line.find(label);
   if (at == std::string_view::npos) {
-    in.fail("expected '" + std::string(label) + "' on the line");
+    in.fail("MESHFILE_2.18", {{"label", std::string(label)}});
   }
   auto rest = line.substr(at + label.size());
   rest = trimmed(rest);
   std::int64_t v = 0;
   const auto [end, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), v);
   if (ec != std::errc() || end == rest.data()) {
-    in.fail("expected an integer after '" + std::string(label) + "'");
+    in.fail("MESHFILE_2.19", {{"label", std::string(label)}});
   }
   return v;
 }
@@ -272,17 +276,17 @@ void readPile1(GibiLines& in, GibiFile& f, std::int64_t nobjects) {
     } else {
       obj.type = gibiType(head[0]);
       if (obj.type == nullptr) {
-        throwFileError("MESHFILE_5", in.file(),
-                       which + " has Cast3M element type " + std::to_string(head[0]) +
-                           ", not implemented yet",
+        throwFileError("MESHFILE_5.8", in.file(), {{"which", which}, {"head", std::to_string(head[0])}},
                        obj.line);
       }
       if (nparts != 0) {
-        in.failContent(which + " has an element type and " + std::to_string(nparts) + " parts");
+        in.failContent("MESHFILE_3.44", {{"which", which}, {"nparts", std::to_string(nparts)}});
       }
       if (nper != static_cast<std::int64_t>(obj.type->perm.size())) {
-        in.failContent(which + " (" + obj.type->name + ") has " + std::to_string(nper) +
-                       " nodes per element, expected " + std::to_string(obj.type->perm.size()));
+        in.failContent("MESHFILE_3.45", {{"which", which},
+                                         {"name", obj.type->name},
+                                         {"nper", std::to_string(nper)},
+                                         {"perm_count", std::to_string(obj.type->perm.size())}});
       }
     }
     in.integers(nrefs, "the references of " + which);
@@ -325,12 +329,12 @@ void readPile(GibiLines& in, std::string_view header, GibiFile& f, std::set<std:
     f.coordinateOf = in.integers(n, "the coordinate entries of the nodes (pile 32)");
   } else {
     if (f.dimension == 0) {
-      in.failContent("coordinates (pile 33) before the space dimension (ENREGISTREMENT DE TYPE 4)");
+      in.failContent("MESHFILE_3.46", {});
     }
     const auto n = in.count(in.integers(1, "the real count of pile 33")[0], "the real count");
     if (n % (f.dimension + 1) != 0) {
-      in.failContent("pile 33 holds " + std::to_string(n) +
-                     " reals, not a multiple of dimension + 1 = " + std::to_string(f.dimension + 1));
+      in.failContent("MESHFILE_3.47",
+                     {{"n", std::to_string(n)}, {"dimension", std::to_string(f.dimension + 1)}});
     }
     f.coordinates = in.reals(n, "node coordinates (pile 33)");
   }
@@ -355,21 +359,20 @@ GibiFile parseGibi(const std::filesystem::path& file) {
       const auto info = in.expectLine("the line ' NIVEAU ... DIMENSION d'");
       f.dimension = static_cast<int>(numberAfter(in, info, "DIMENSION"));
       if (f.dimension != 2 && f.dimension != 3) {
-        in.failContent("space dimension " + std::to_string(f.dimension) + ": only 2 and 3 are supported");
+        in.failContent("MESHFILE_3.48", {{"dimension", std::to_string(f.dimension)}});
       }
     } else if (type == 2) {
       readPile(in, in.expectLine("a line ' PILE NUMERO ...'"), f, seen);
     }
   }
   if (!records) {
-    throwFileError("MESHFILE_2", file,
-                   "no 'ENREGISTREMENT DE TYPE' record: not a GIBI (Cast3M SAUVER FORMATTE) file");
+    throwFileError("MESHFILE_2.2", file, {});
   }
   if (f.objects.empty()) {
-    throwFileError("MESHFILE_3", file, "no mesh object (PILE NUMERO 1)");
+    throwFileError("MESHFILE_3.18", file, {});
   }
   if (f.coordinateOf.empty() || f.coordinates.empty()) {
-    throwFileError("MESHFILE_3", file, "no node coordinates (PILE NUMERO 32 and 33)");
+    throwFileError("MESHFILE_3.19", file, {});
   }
   return f;
 }
@@ -382,9 +385,10 @@ void buildNodes(const std::filesystem::path& file, const GibiFile& f, Mesh& mesh
   for (std::size_t i = 0; i < f.coordinateOf.size(); ++i) {
     const auto entry = f.coordinateOf[i];
     if (entry < 1 || entry > entries) {
-      throwFileError("MESHFILE_3", file,
-                     "node " + std::to_string(i + 1) + " has coordinate entry " + std::to_string(entry) +
-                         " (pile 32) but pile 33 has " + std::to_string(entries),
+      throwFileError("MESHFILE_3.20", file,
+                     {{"i", std::to_string(i + 1)},
+                      {"entry", std::to_string(entry)},
+                      {"entries", std::to_string(entries)}},
                      f.coordinateOfLine + static_cast<int>(i / 10));
     }
     Point3 x{0.0, 0.0, 0.0};
@@ -414,10 +418,10 @@ std::vector<std::vector<CellId>> buildCells(const std::filesystem::path& file, c
       for (std::size_t j = 0; j < nn; ++j) {
         const auto n = obj.nodes[e * nn + static_cast<std::size_t>(perm[j])];
         if (n < 1 || n > nnodes) {
-          throwFileError("MESHFILE_3", file,
-                         "mesh object " + std::to_string(o + 1) + " refers to node " + std::to_string(n) +
-                             " but pile 32 has " + std::to_string(nnodes) + " nodes",
-                         obj.line);
+          throwFileError(
+              "MESHFILE_3.21", file,
+              {{"o", std::to_string(o + 1)}, {"n", std::to_string(n)}, {"nnodes", std::to_string(nnodes)}},
+              obj.line);
         }
         nodes[j] = static_cast<NodeId>(n - 1);
       }
@@ -442,13 +446,14 @@ void collectParts(const std::filesystem::path& file, const GibiFile& f, std::int
     return;
   }
   if (depth > 64) {
-    throwFileError("MESHFILE_3", file, "mesh object " + std::to_string(o + 1) + " contains itself", obj.line);
+    throwFileError("MESHFILE_3.22", file, {{"o", std::to_string(o + 1)}}, obj.line);
   }
   for (const auto p : obj.parts) {
     if (p < 1 || p > static_cast<std::int64_t>(f.objects.size())) {
-      throwFileError("MESHFILE_3", file,
-                     "mesh object " + std::to_string(o + 1) + " has part " + std::to_string(p) +
-                         " but pile 1 has " + std::to_string(f.objects.size()) + " objects",
+      throwFileError("MESHFILE_3.23", file,
+                     {{"o", std::to_string(o + 1)},
+                      {"p", std::to_string(p)},
+                      {"objects_count", std::to_string(f.objects.size())}},
                      obj.line);
     }
     collectParts(file, f, p - 1, depth + 1, out);
@@ -461,9 +466,10 @@ void buildGroups(const std::filesystem::path& file, const GibiFile& f,
                  const std::vector<std::vector<CellId>>& cells, Mesh& mesh) {
   for (const auto& [name, index] : f.names) {
     if (index < 1 || index > static_cast<std::int64_t>(f.objects.size())) {
-      throwFileError("MESHFILE_3", file,
-                     "object name '" + name + "' refers to object " + std::to_string(index) +
-                         " but pile 1 has " + std::to_string(f.objects.size()) + " objects",
+      throwFileError("MESHFILE_3.24", file,
+                     {{"name", name},
+                      {"index", std::to_string(index)},
+                      {"objects_count", std::to_string(f.objects.size())}},
                      f.namesLine);
     }
     std::vector<std::size_t> parts;
@@ -476,9 +482,10 @@ void buildGroups(const std::filesystem::path& file, const GibiFile& f,
   }
   for (const auto& [name, number] : f.pointNames) {
     if (number < 1 || number > static_cast<std::int64_t>(f.coordinateOf.size())) {
-      throwFileError("MESHFILE_3", file,
-                     "point name '" + name + "' refers to node " + std::to_string(number) +
-                         " but pile 32 has " + std::to_string(f.coordinateOf.size()) + " nodes",
+      throwFileError("MESHFILE_3.25", file,
+                     {{"name", name},
+                      {"number", std::to_string(number)},
+                      {"coordinate_of_count", std::to_string(f.coordinateOf.size())}},
                      f.pointNamesLine);
     }
     mesh.setNodeGroup(name, std::vector<NodeId>{static_cast<NodeId>(number - 1)});
@@ -494,7 +501,7 @@ Mesh readGibiMesh(const std::filesystem::path& file) {
   buildNodes(file, f, mesh);
   const auto cells = buildCells(file, f, mesh);
   if (mesh.cellCount() == 0) {
-    throwFileError("MESHFILE_3", file, "the mesh objects hold no element");
+    throwFileError("MESHFILE_3.26", file, {});
   }
   buildGroups(file, f, cells, mesh);
   return mesh;

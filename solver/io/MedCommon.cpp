@@ -196,22 +196,22 @@ MedFile::MedFile(const std::filesystem::path& file, Mode mode, std::filesystem::
   if (mode == Mode::Read || mode == Mode::Append) {
     if (!std::filesystem::is_regular_file(file, ec)) {
       if (mode == Mode::Read) {
-        throwFileError("MESHFILE_1", file, "the file does not exist or is not a regular file");
+        throwFileError("MESHFILE_1", file, {});
       }
       mode = Mode::Create;
     }
   }
   if (mode == Mode::Read) {
     if (std::filesystem::file_size(file, ec) == 0) {
-      throwFileError("MESHFILE_1", file, "the file is empty");
+      throwFileError("MESHFILE_1.3", file, {});
     }
     med_bool hdfok = MED_FALSE;
     med_bool medok = MED_FALSE;
     if (MEDfileCompatibility(p.c_str(), &hdfok, &medok) < 0 || hdfok != MED_TRUE) {
-      throwFileError("MESHFILE_4", file, "not an HDF5 file, so not a MED file (damaged or wrong FORMAT?)");
+      throwFileError("MESHFILE_4", file, {});
     }
     if (medok != MED_TRUE) {
-      throwFileError("MESHFILE_4", file, "an HDF5 file but not a MED file this library can read");
+      throwFileError("MESHFILE_4.2", file, {});
     }
   }
   const med_access_mode access = mode == Mode::Read     ? MED_ACC_RDONLY
@@ -223,7 +223,7 @@ MedFile::MedFile(const std::filesystem::path& file, Mode mode, std::filesystem::
              : MEDfileOpen(p.c_str(), access);
   if (fid_ < 0) {
     if (mode == Mode::Read) {
-      throwFileError("MESHFILE_4", shown_, "the MED library cannot open the file");
+      throwFileError("MESHFILE_4.3", shown_, {});
     }
     mode_ = mode;
     check(-1, "MEDfileOpen", "creating the file");
@@ -236,10 +236,12 @@ MedFile::MedFile(const std::filesystem::path& file, Mode mode, std::filesystem::
     if (major != version[0] || minor != version[1]) {
       MEDfileClose(fid_);
       fid_ = -1;
-      throwFileError("MESHFILE_7", file,
-                     fmt::format("the file is in MED {}.{}, VERSION_MED asks {}.{}.{}: one file holds one "
-                                 "version (write to another unit, or give the same VERSION_MED)",
-                                 major, minor, version[0], version[1], version[2]));
+      throwFileError("MESHFILE_7.3", file,
+                     {{"major", major},
+                      {"minor", minor},
+                      {"version", version[0]},
+                      {"version_2", version[1]},
+                      {"version_3", version[2]}});
     }
   }
 }
@@ -272,16 +274,16 @@ void MedFile::check(med_err status, const char* call, const std::string& context
     return;
   }
   if (mode_ == Mode::Read) {
-    throwFileError("MESHFILE_4", shown_, std::string(call) + " failed (" + context + "): damaged file?");
+    throwFileError("MESHFILE_4.4", shown_, {{"call", std::string(call)}, {"context", context}});
   }
   const bool osError = error == ENOSPC || error == EFBIG || error == EDQUOT || error == EIO ||
                        error == EROFS || error == EACCES || error == EPERM || error == ENOENT ||
                        error == ENOTDIR || error == EISDIR;
   throw UserError(
-      Diagnostic::fatal("MESHFILE_7", "cannot write the MED file '" + shown_.string() + "': " + call +
-                                          " failed (" + context + "): " +
-                                          (osError ? osReason(error) : "the MED library gives no OS reason"))
-          .withNote(osError ? osAdvice(error) : "check the space left and the file-size limit (ulimit -f)"));
+      msg::make(
+          osError ? "MESHFILE_7.os" : "MESHFILE_7.med",
+          {{"file", shown_.string()}, {"call", call}, {"context", context}, {"reason", osReason(error)}})
+          .withNote(osError ? osAdvice(error) : msg::text("MESHFILE_7.n1")));
 }
 
 std::string medName(const char* field, std::size_t width) {

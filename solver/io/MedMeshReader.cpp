@@ -4,6 +4,7 @@
 // through the library's 2.3 family call). Cells are numbered in increasing MED geometry order,
 // as code_aster does. Every library failure becomes MESHFILE_4 naming the file and the step.
 
+#include "messages/Messages.hpp"
 #include "solver/io/MedCommon.hpp"
 #include "solver/io/MeshFileError.hpp"
 #include "solver/io/MeshIO.hpp"
@@ -30,8 +31,7 @@ std::vector<MeshHeader> readHeaders(const MedFile& f) {
     const med_int naxis = MEDmeshnAxis(f.id(), static_cast<int>(i));
     f.check(naxis, "MEDmeshnAxis", "mesh " + std::to_string(i));
     if (naxis < 1 || naxis > 3) {
-      throwFileError("MESHFILE_3", f.path(),
-                     "mesh " + std::to_string(i) + " has space dimension " + std::to_string(naxis));
+      throwFileError("MESHFILE_3.7", f.path(), {{"i", std::to_string(i)}, {"naxis", std::to_string(naxis)}});
     }
     MeshHeader h;
     char name[MED_NAME_SIZE + 1] = {};
@@ -109,7 +109,7 @@ void readFamily23(const MedFile& f, const std::string& mesh, int family, med_int
   const med_int nattr = MEDnFamily23Attribute(f.id(), mesh.c_str(), family);
   f.check(nattr, "MEDnFamily23Attribute", context);
   if (nattr > 100000) {
-    throwFileError("MESHFILE_3", f.path(), context + " claims " + std::to_string(nattr) + " attributes");
+    throwFileError("MESHFILE_3.8", f.path(), {{"context", context}, {"nattr", std::to_string(nattr)}});
   }
   const auto na = static_cast<std::size_t>(nattr);
   std::vector<med_int> ids(na + 1);
@@ -130,8 +130,8 @@ std::map<med_int, std::vector<std::string>> readFamilyGroups(const MedFile& f, c
     const med_int ngroup = MEDnFamilyGroup(f.id(), mesh.c_str(), static_cast<int>(i));
     f.check(ngroup, "MEDnFamilyGroup", "family " + std::to_string(i) + " of mesh " + mesh);
     if (ngroup > 100000) {
-      throwFileError("MESHFILE_3", f.path(),
-                     "family " + std::to_string(i) + " claims " + std::to_string(ngroup) + " groups");
+      throwFileError("MESHFILE_3.9", f.path(),
+                     {{"i", std::to_string(i)}, {"ngroup", std::to_string(ngroup)}});
     }
     med_int number = 0;
     std::vector<char> names(static_cast<std::size_t>(ngroup) * MED_LNAME_SIZE + 1, '\0');
@@ -187,9 +187,7 @@ void checkPlausible(const MedFile& f, std::uint64_t values, std::size_t bytesEac
   std::error_code ec;
   const auto size = std::filesystem::file_size(f.path(), ec);
   if (!ec && values * bytesEach > 4 * size + (1u << 20)) {
-    throwFileError("MESHFILE_3", f.path(),
-                   what + ": the file claims " + std::to_string(values) +
-                       " values, more than it can hold (damaged file?)");
+    throwFileError("MESHFILE_3.10", f.path(), {{"what", what}, {"values", std::to_string(values)}});
   }
 }
 
@@ -202,9 +200,9 @@ Mesh readMedMesh(const std::filesystem::path& file, const std::string& meshName)
   try {
     return readMedMeshUnguarded(file, meshName);
   } catch (const std::bad_alloc&) {
-    throwFileError("MESHFILE_3", file, "sizes in the file are too large to be real (damaged file?)");
+    throwFileError("MESHFILE_3.11", file, {});
   } catch (const std::length_error&) {
-    throwFileError("MESHFILE_3", file, "sizes in the file are too large to be real (damaged file?)");
+    throwFileError("MESHFILE_3.11", file, {});
   }
 }
 
@@ -214,7 +212,7 @@ Mesh readMedMeshUnguarded(const std::filesystem::path& file, const std::string& 
   const MedFile f(file, MedFile::Mode::Read);
   const auto headers = readHeaders(f);
   if (headers.empty()) {
-    throwFileError("MESHFILE_3", file, "the MED file holds no mesh");
+    throwFileError("MESHFILE_3.12", file, {});
   }
   const MeshHeader* header = &headers.front();
   if (!meshName.empty()) {
@@ -227,14 +225,12 @@ Mesh readMedMeshUnguarded(const std::filesystem::path& file, const std::string& 
       }
     }
     if (header == nullptr) {
-      throw UserError(Diagnostic::fatal("MESHFILE_6", "mesh file '" + file.string() +
-                                                          "': there is no mesh named '" + meshName +
-                                                          "' (NOM_MED)")
-                          .withNote("meshes in the file: " + available));
+      throw UserError(msg::make(
+          "MESHFILE_6", {{"file", file.string()}, {"mesh_name", meshName}, {"available", available}}));
     }
   }
   if (header->type != MED_UNSTRUCTURED_MESH) {
-    throwFileError("MESHFILE_5", file, "mesh '" + header->name + "' is structured: not implemented yet");
+    throwFileError("MESHFILE_5", file, {{"name", header->name}});
   }
   const std::string& name = header->name;
   const auto families = readFamilyGroups(f, name);
@@ -245,7 +241,7 @@ Mesh readMedMeshUnguarded(const std::filesystem::path& file, const std::string& 
   // Nodes.
   const med_int nnodes = entityCount(f, name, MED_NODE, MED_NONE, MED_COORDINATE);
   if (nnodes <= 0) {
-    throwFileError("MESHFILE_3", file, "mesh '" + name + "' has no nodes");
+    throwFileError("MESHFILE_3.13", file, {{"name", name}});
   }
   const auto sd = static_cast<std::size_t>(header->spaceDim);
   checkPlausible(f, static_cast<std::uint64_t>(nnodes) * sd, sizeof(med_float), "coordinates");
@@ -260,7 +256,7 @@ Mesh readMedMeshUnguarded(const std::filesystem::path& file, const std::string& 
     for (std::size_t d = 0; d < sd; ++d) {
       x[d] = coords[static_cast<std::size_t>(i) * sd + d];
       if (!std::isfinite(x[d])) {
-        throwFileError("MESHFILE_3", file, "node " + std::to_string(i + 1) + " has a non-finite coordinate");
+        throwFileError("MESHFILE_3.14", file, {{"i", std::to_string(i + 1)}});
       }
     }
     if (nodeNames.empty()) {
@@ -300,10 +296,11 @@ Mesh readMedMeshUnguarded(const std::filesystem::path& file, const std::string& 
       for (std::size_t j = 0; j < nn; ++j) {
         const med_int v = conn[static_cast<std::size_t>(c) * nn + static_cast<std::size_t>(perm[j])];
         if (v < 1 || v > nnodes) {
-          throwFileError("MESHFILE_3", file,
-                         std::string(stella::name(t)) + " cell " + std::to_string(c + 1) +
-                             " refers to node " + std::to_string(v) + " but the mesh has " +
-                             std::to_string(nnodes) + " nodes");
+          throwFileError("MESHFILE_3.15", file,
+                         {{"name", std::string(stella::name(t))},
+                          {"c", std::to_string(c + 1)},
+                          {"v", std::to_string(v)},
+                          {"nnodes", std::to_string(nnodes)}});
         }
         nodes[j] = v - 1;
       }
@@ -325,18 +322,16 @@ Mesh readMedMeshUnguarded(const std::filesystem::path& file, const std::string& 
             "MEDmeshEntityInfo", "cell types of mesh " + name);
     if (const auto t = cellTypeFromMed(geo);
         t && entityCount(f, name, MED_CELL, geo, MED_CONNECTIVITY) <= 0) {
-      throwFileError("MESHFILE_3", file,
-                     "mesh '" + name + "' lists " + std::string(stella::name(*t)) +
-                         " cells without connectivity");
+      throwFileError("MESHFILE_3.16", file, {{"name", name}, {"name_2", std::string(stella::name(*t))}});
     }
     if (!cellTypeFromMed(geo)) {
-      throwFileError("MESHFILE_5", file,
-                     "mesh '" + name + "' has cells of MED type " + medName(geoName, MED_NAME_SIZE) + " (" +
-                         std::to_string(geo) + "), not implemented yet");
+      throwFileError(
+          "MESHFILE_5.2", file,
+          {{"name", name}, {"med_name", medName(geoName, MED_NAME_SIZE)}, {"geo", std::to_string(geo)}});
     }
   }
   if (mesh.cellCount() == 0) {
-    throwFileError("MESHFILE_3", file, "mesh '" + name + "' has no cells");
+    throwFileError("MESHFILE_3.17", file, {{"name", name}});
   }
   for (auto& [g, ids] : cellGroups) {
     mesh.setCellGroup(g, std::move(ids));

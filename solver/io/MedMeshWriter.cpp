@@ -48,7 +48,7 @@ void writeFamilies(const MedFile& f, const std::string& mesh, const Families& fa
     std::string names;
     for (const auto& g : groups) {
       if (g.size() > MED_LNAME_SIZE) {
-        throwFileError("MESHFILE_7", f.path(), "group name '" + g + "' is longer than MED's 80 characters");
+        throwFileError("MESHFILE_7.6", f.path(), {{"g", g}});
       }
       names += medPadded(g, MED_LNAME_SIZE);
     }
@@ -94,7 +94,7 @@ void writeMedMeshInto(const MedFile& f, const Mesh& mesh, const std::string& req
   const std::string name =
       !requestedName.empty() ? requestedName : (!mesh.name().empty() ? mesh.name() : "MAIL");
   if (name.size() > MED_NAME_SIZE) {
-    throwFileError("MESHFILE_7", f.path(), "mesh name '" + name + "' is longer than MED's 64 characters");
+    throwFileError("MESHFILE_7.7", f.path(), {{"name", name}});
   }
   const med_int sd = mesh.dimension() == 2 ? 2 : 3;
   const med_int md = std::max(1, mesh.maxCellDimension());

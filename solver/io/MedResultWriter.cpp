@@ -3,6 +3,7 @@
 // cell type (reference coordinates in MED's node order, points from the GaussPointProvider);
 // cell-node fields are written on MED_NODE_ELEMENT with the nodes in MED's order.
 
+#include "messages/Messages.hpp"
 #include "solver/io/MedCommon.hpp"
 #include "solver/io/MedMeshWriterDetail.hpp"
 #include "solver/io/MeshFileError.hpp"
@@ -339,9 +340,7 @@ public:
     if (append && std::filesystem::exists(file_, ec)) {
       if (auto reason = copyResultFile(file_, partial_)) {
         std::filesystem::remove(partial_, ec);
-        throw UserError(
-            Diagnostic::fatal("MESHFILE_7", "cannot write the MED file '" + file_.string() + "': " + *reason)
-                .withNote("the file keeps what the earlier IMPR_RESU calls wrote"));
+        throw UserError(msg::make("MESHFILE_7", {{"file", file_.string()}, {"reason", *reason}}));
       }
     }
   }
@@ -356,9 +355,9 @@ public:
     std::error_code ec;
     std::filesystem::rename(partial_, file_, ec);
     if (ec) {
-      throw UserError(Diagnostic::fatal("MESHFILE_7", "cannot write the MED file '" + file_.string() +
-                                                          "': renaming " + partial_.filename().string() +
-                                                          " failed: " + osReason(ec.value())));
+      throw UserError(msg::make("MESHFILE_7.2", {{"file", file_.string()},
+                                                 {"filename", partial_.filename().string()},
+                                                 {"os_reason", osReason(ec.value())}}));
     }
   }
 
@@ -381,11 +380,8 @@ void writeMedResult(const std::filesystem::path& file, const Mesh& mesh, const s
   } catch (UserError& e) {
     std::vector<Diagnostic> ds = e.diagnostics();
     std::error_code ec;
-    ds.front().withNote(
-        std::filesystem::exists(file, ec)
-            ? "nothing of this call was written: the file keeps what the earlier IMPR_RESU calls "
-              "wrote, readable"
-            : "the incomplete file was removed: no MED file is announced as written");
+    ds.front().withNote(std::filesystem::exists(file, ec) ? msg::text("MESHFILE_7.n2")
+                                                          : msg::text("MESHFILE_7.n3"));
     throw UserError(std::move(ds));
   }
   partial.commit();

@@ -3,6 +3,7 @@
 #include "solver/io/MeshConvert.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/io/MeshIO.hpp"
 
 namespace stella {
@@ -12,9 +13,7 @@ namespace {
 MeshFormat formatOf(const std::string& file) {
   const auto f = meshFormatFromExtension(file);
   if (!f) {
-    throw UserError(
-        Diagnostic::fatal("MESHCONV_1", "cannot tell the mesh format of '" + file + "' from its extension")
-            .withNote("use .med (MED), .mail (ASTER) or .msh (Gmsh)"));
+    throw UserError(msg::make("MESHCONV_1", {{"file", file}}));
   }
   return *f;
 }

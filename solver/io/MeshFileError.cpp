@@ -7,31 +7,28 @@
 
 namespace stella {
 
-void throwFileError(const std::string& id, const std::filesystem::path& file, const std::string& what,
-                    int line) {
-  std::string where = "'" + file.string() + "'";
-  if (line > 0) {
-    where += " line " + std::to_string(line);
-  }
-  throw UserError(
-      Diagnostic::fatal(id, "mesh file " + where + ": " + what)
-          .withNote("check that the unit points to the right file and that the FORMAT matches it"));
+void throwFileError(std::string_view key, const std::filesystem::path& file, msg::Args args, int line) {
+  Diagnostic d = msg::make(key, args);
+  d.message =
+      line > 0 ? msg::text("MESHFILE.at_line", {{"file", file.string()}, {"line", line}, {"what", d.message}})
+               : msg::text("MESHFILE.at", {{"file", file.string()}, {"what", d.message}});
+  throw UserError(std::move(d.withNote(msg::text("MESHFILE.n1"))));
 }
 
 std::string readWholeFile(const std::filesystem::path& file) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) {
-    throwFileError("MESHFILE_1", file, "the file does not exist or is not a regular file");
+    throwFileError("MESHFILE_1", file, {});
   }
   std::ifstream in(file, std::ios::binary);
   if (!in) {
-    throwFileError("MESHFILE_1", file, "the file cannot be opened for reading");
+    throwFileError("MESHFILE_1.2", file, {});
   }
   std::ostringstream s;
   s << in.rdbuf();
   std::string text = s.str();
   if (text.empty()) {
-    throwFileError("MESHFILE_1", file, "the file is empty");
+    throwFileError("MESHFILE_1.3", file, {});
   }
   return text;
 }

@@ -43,7 +43,7 @@ inline std::vector<std::size_t> keptComponents(const Field& f, const ResultOutpu
 inline std::ofstream openOutput(const std::filesystem::path& file, std::ios::openmode mode = std::ios::out) {
   std::ofstream out(file, mode);
   if (!out) {
-    throwFileError("MESHFILE_7", file, "the file cannot be opened for writing");
+    throwFileError("MESHFILE_7.8", file, {});
   }
   return out;
 }

@@ -33,7 +33,7 @@ void writeGmshResult(const std::filesystem::path& file, const Mesh& mesh, const 
   writeGmshMesh(file, mesh);
   std::ofstream out(file, std::ios::app);
   if (!out) {
-    throwFileError("MESHFILE_7", file, "the file cannot be opened for writing");
+    throwFileError("MESHFILE_7.8", file, {});
   }
   for (const auto& name : selectedFields(result, output)) {
     for (const ResultStep* s : selectedSteps(result, output)) {

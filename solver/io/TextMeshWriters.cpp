@@ -15,7 +15,7 @@ namespace {
 std::ofstream openForWriting(const std::filesystem::path& file) {
   std::ofstream out(file);
   if (!out) {
-    throwFileError("MESHFILE_7", file, "the file cannot be opened for writing");
+    throwFileError("MESHFILE_7.8", file, {});
   }
   return out;
 }
@@ -23,7 +23,7 @@ std::ofstream openForWriting(const std::filesystem::path& file) {
 void finish(std::ofstream& out, const std::filesystem::path& file) {
   out.flush();
   if (!out) {
-    throwFileError("MESHFILE_7", file, "writing failed (disk full?)");
+    throwFileError("MESHFILE_7.5", file, {});
   }
 }
 
@@ -123,9 +123,7 @@ void writeGmshMesh(const std::filesystem::path& file, const Mesh& mesh) {
     const CellType t = mesh.cellType(c);
     const int gt = gmshTypeOf(t);
     if (gt == 0) {
-      throwFileError("MESHFILE_5", file,
-                     std::string("Gmsh has no cell type for ") + std::string(name(t)) + " (cell " +
-                         mesh.cellName(c) + "): not implemented yet");
+      throwFileError("MESHFILE_5.6", file, {{"name", std::string(name(t))}, {"cell_name", mesh.cellName(c)}});
     }
     const auto nodes = mesh.cellNodes(c);
     const auto perm = gmshPermutation(t);
@@ -195,8 +193,7 @@ void writeMesh(const std::filesystem::path& file, const Mesh& mesh, MeshFormat f
     writeGmshMesh(file, mesh);
     return;
   case MeshFormat::Gibi:
-    throwFileError("MESHFILE_5", file,
-                   "writing GIBI files is not implemented yet (write MED, ASTER or GMSH)");
+    throwFileError("MESHFILE_5.7", file, {});
   }
 }
 

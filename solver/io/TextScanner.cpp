@@ -44,7 +44,7 @@ std::string_view TextScanner::next() {
     const std::size_t start = pos_ + 1;
     const std::size_t end = text_.find_first_of("\"\n", start);
     if (end == std::string::npos || text_[end] != '"') {
-      fail("unterminated quoted string");
+      fail("MESHFILE_2.3", {});
     }
     pos_ = end + 1;
     return all.substr(start, end - start);
@@ -64,7 +64,7 @@ std::string_view TextScanner::next() {
 std::string_view TextScanner::expect(const char* what) {
   const auto t = next();
   if (t.empty()) {
-    fail(std::string("unexpected end of file, expected ") + what);
+    fail("MESHFILE_2.4", {{"what", what}});
   }
   return t;
 }
@@ -105,7 +105,7 @@ std::int64_t TextScanner::integer(const char* what) {
   }
   const auto [ptr, ec] = std::from_chars(begin, t.data() + t.size(), v);
   if (ec != std::errc() || ptr != t.data() + t.size()) {
-    fail(std::string("expected ") + what + " (an integer), found '" + std::string(t.substr(0, 40)) + "'");
+    fail("MESHFILE_2.5", {{"what", what}, {"substr", std::string(t.substr(0, 40))}});
   }
   return v;
 }
@@ -122,10 +122,10 @@ double TextScanner::real(const char* what) {
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);
   if (s.empty() || end != s.c_str() + s.size()) {
-    fail(std::string("expected ") + what + " (a real number), found '" + std::string(t.substr(0, 40)) + "'");
+    fail("MESHFILE_2.6", {{"what", what}, {"substr", std::string(t.substr(0, 40))}});
   }
   if (!std::isfinite(v)) {
-    failContent(std::string(what) + " is not a finite number ('" + std::string(t.substr(0, 40)) + "')");
+    failContent("MESHFILE_3.27", {{"what", std::string(what)}, {"substr", std::string(t.substr(0, 40))}});
   }
   return v;
 }
@@ -133,11 +133,10 @@ double TextScanner::real(const char* what) {
 std::int64_t TextScanner::count(const char* what, std::int64_t bytesPerItem) {
   const std::int64_t n = integer(what);
   if (n < 0) {
-    failContent(std::string(what) + " is negative (" + std::to_string(n) + ")");
+    failContent("MESHFILE_3.28", {{"what", std::string(what)}, {"n", std::to_string(n)}});
   }
   if (n > static_cast<std::int64_t>(text_.size()) / std::max<std::int64_t>(1, bytesPerItem) + 1) {
-    failContent(std::string(what) + " is " + std::to_string(n) +
-                ", more than the file can hold (truncated file?)");
+    failContent("MESHFILE_3.29", {{"what", std::string(what)}, {"n", std::to_string(n)}});
   }
   return n;
 }
@@ -164,7 +163,7 @@ bool TextScanner::skipPastLine(std::string_view marker) {
 
 std::int64_t TextScanner::binaryInteger(int bytes, const char* what) {
   if (pos_ + static_cast<std::size_t>(bytes) > text_.size()) {
-    fail(std::string("unexpected end of file, expected ") + what);
+    fail("MESHFILE_2.4", {{"what", what}});
   }
   std::int64_t v = 0;
   if (bytes == 4) {
@@ -180,13 +179,13 @@ std::int64_t TextScanner::binaryInteger(int bytes, const char* what) {
 
 double TextScanner::binaryReal(const char* what) {
   if (pos_ + 8 > text_.size()) {
-    fail(std::string("unexpected end of file, expected ") + what);
+    fail("MESHFILE_2.4", {{"what", what}});
   }
   double v = 0.0;
   std::memcpy(&v, text_.data() + pos_, 8);
   pos_ += 8;
   if (!std::isfinite(v)) {
-    failContent(std::string(what) + " is not a finite number");
+    failContent("MESHFILE_3.30", {{"what", std::string(what)}});
   }
   return v;
 }
@@ -194,18 +193,17 @@ double TextScanner::binaryReal(const char* what) {
 std::int64_t TextScanner::binaryCount(const char* what, std::int64_t bytesPerItem) {
   const std::int64_t n = binaryInteger(8, what);
   if (n < 0 || n > static_cast<std::int64_t>(text_.size()) / std::max<std::int64_t>(1, bytesPerItem) + 1) {
-    failContent(std::string(what) + " is " + std::to_string(n) +
-                ", more than the file can hold (truncated file?)");
+    failContent("MESHFILE_3.29", {{"what", std::string(what)}, {"n", std::to_string(n)}});
   }
   return n;
 }
 
-void TextScanner::fail(const std::string& what) const {
-  throwFileError("MESHFILE_2", file_, what, tokenLine_);
+void TextScanner::fail(std::string_view key, msg::Args args) const {
+  throwFileError(key, file_, args, tokenLine_);
 }
 
-void TextScanner::failContent(const std::string& what) const {
-  throwFileError("MESHFILE_3", file_, what, tokenLine_);
+void TextScanner::failContent(std::string_view key, msg::Args args) const {
+  throwFileError(key, file_, args, tokenLine_);
 }
 
 } // namespace stella

@@ -5,6 +5,8 @@
 // Formats that mix text and binary blocks (Gmsh binary .msh) read raw little-endian values with
 // the binary* functions after startBinary().
 
+#include "messages/Messages.hpp"
+
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -46,8 +48,9 @@ public:
   // A binary count (8 bytes) that cannot exceed what the file could hold, as count().
   std::int64_t binaryCount(const char* what, std::int64_t bytesPerItem);
 
-  [[noreturn]] void fail(const std::string& what) const;
-  [[noreturn]] void failContent(const std::string& what) const;
+  // Throws catalogue entry `key` (MESHFILE_2 syntax, MESHFILE_3 content) at the current line.
+  [[noreturn]] void fail(std::string_view key, msg::Args args = {}) const;
+  [[noreturn]] void failContent(std::string_view key, msg::Args args = {}) const;
   const std::filesystem::path& file() const { return file_; }
   std::size_t size() const { return text_.size(); }
 

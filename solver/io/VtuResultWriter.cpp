@@ -130,7 +130,7 @@ public:
       compressed.resize(at + out);
       if (compress2(compressed.data() + at, &out, in + b * blockSize, static_cast<uLong>(length), 6) !=
           Z_OK) {
-        throwFileError("MESHFILE_7", file_, "zlib could not compress the data");
+        throwFileError("MESHFILE_7.4", file_, {});
       }
       compressed.resize(at + out);
       header.push_back(out);
@@ -316,7 +316,7 @@ void writeVtu(const std::filesystem::path& file, const Mesh& mesh, const ResultS
   out << "\n  </AppendedData>\n</VTKFile>\n";
   out.flush();
   if (!out) {
-    throwFileError("MESHFILE_7", file, "writing failed (disk full?)");
+    throwFileError("MESHFILE_7.5", file, {});
   }
 }
 

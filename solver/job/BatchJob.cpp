@@ -6,6 +6,7 @@
 #include "TeeStream.hpp"
 #include "catalog/Catalog.hpp"
 #include "interpreter/Interpreter.hpp"
+#include "messages/Messages.hpp"
 #include "solver/linalg/BlasThreads.hpp"
 #include "solver/session/ExceptionDiagnostic.hpp"
 #include "solver/session/MemoryLimit.hpp"
@@ -42,9 +43,7 @@ fs::path makeWorkDirectory(const RunOptions& options) {
     const fs::path& dir = options.workDirectory;
     if (fs::exists(dir) && !fs::is_empty(dir)) {
       if (!fs::exists(dir / workMarker)) {
-        throw UserError(Diagnostic::fatal("RUN_4", "the work directory " + dir.string() +
-                                                       " is not empty and was not made by stella")
-                            .withNote("give a new or empty directory to --work-dir"));
+        throw UserError(msg::make("RUN_4", {{"dir", dir.string()}}));
       }
       fs::remove_all(dir);
     }
@@ -54,9 +53,7 @@ fs::path makeWorkDirectory(const RunOptions& options) {
   }
   std::string pattern = (fs::temp_directory_path() / "stella-run-XXXXXX").string();
   if (mkdtemp(pattern.data()) == nullptr) {
-    throw UserError(
-        Diagnostic::fatal("RUN_1", "cannot create a work directory in " + fs::temp_directory_path().string())
-            .withNote("set TMPDIR to a writable directory or pass --work-dir"));
+    throw UserError(msg::make("RUN_1", {{"temp_directory_path", fs::temp_directory_path().string()}}));
   }
   return fs::path(pattern);
 }
@@ -249,12 +246,7 @@ Diagnostic copyFailure(const CopyFailure& f, const fs::path& work) {
   const std::string kept = f.source.filename().string();
   const std::string what = f.unit != 0 ? fmt::format("the result file of unit {}", f.unit)
                                        : "the MED file of the steps of the failed command";
-  return Diagnostic::fatal("RUN_5", fmt::format("{} could not be copied back: {}", what, f.reason))
-      .withNote(fmt::format("its content is kept in the work directory {} (file {}); the other result "
-                            "files were copied back",
-                            work.string(), kept))
-      .withNote("give a destination that can be written (a file name in a writable folder with space "
-                "left) in the export");
+  return msg::make("RUN_5", {{"what", what}, {"reason", f.reason}, {"work", work.string()}, {"kept", kept}});
 }
 
 // The data files of the export copied to their units; returns the paths of the units.
@@ -323,7 +315,7 @@ std::unique_ptr<Session> runStudy(const JobSpec& spec, const fs::path& work, std
       report(d);
     }
   } catch (const std::exception& e) {
-    report(diagnosticOf(e, "running the study"));
+    report(diagnosticOf(e, msg::text("DURING.study")));
   }
   return session;
 }
@@ -337,15 +329,11 @@ void closeSession(Session& session, const JobSpec& spec, const std::vector<const
     const bool written = fs::exists(work / ("fort." + std::to_string(d->unit)));
     if (!written && std::find(opened.begin(), opened.end(), d->unit) == opened.end()) {
       session.report(
-          Diagnostic::alarm("RUN_2", fmt::format("the data file {} declared for unit {} ({}) does not "
-                                                 "exist; the study never opened it",
-                                                 d->source.string(), d->unit, d->origin)));
+          msg::make("RUN_2", {{"source", d->source.string()}, {"unit", d->unit}, {"origin", d->origin}}));
     }
   }
   if (spec.saveBase) {
-    session.report(Diagnostic::alarm("RUN_3",
-                                     "saving the concept database (R base) is not implemented yet; the "
-                                     "other result files are written"));
+    session.report(msg::make("RUN_3"));
   }
   writeTimingSummary(mess, session);
 }
@@ -353,16 +341,12 @@ void closeSession(Session& session, const JobSpec& spec, const std::vector<const
 // The diagnostic of a run process that ended on `signal`, with what usually causes it.
 Diagnostic crashDiagnostic(int signal) {
   const char* name = sigabbrev_np(signal);
-  Diagnostic d = Diagnostic::fatal("RUN_7", fmt::format("the run process ended on signal {} (SIG{})", signal,
-                                                        name != nullptr ? name : "?"));
+  Diagnostic d = msg::make("RUN_7", {{"signal", signal}, {"signal_name", name != nullptr ? name : "?"}});
   d.kind = FailureKind::Abort;
   if (signal == SIGKILL) {
-    d.withNote("SIGKILL without a request is most often the system's out-of-memory killer: the study "
-               "needed more memory than the machine had; P memory_limit in the export stops such a run "
-               "with an error instead, and a coarser mesh or another SOLVEUR needs less");
+    d.withNote(msg::text("RUN_7.n2"));
   } else {
-    d.withNote("a crash in stella or in a library it calls (under P memory_limit, a library that ran out "
-               "of memory may end so); please report it with the command file");
+    d.withNote(msg::text("RUN_7.n1"));
   }
   return d;
 }
@@ -450,7 +434,7 @@ JobResult runInWork(const JobSpec& spec, const RunOptions& options, const fs::pa
       copyKeptFiles(*session, copied);
       probeOpenUnits(spec, work, copied);
     } catch (const std::exception& e) {
-      session->report(diagnosticOf(e, "copying the result files back"));
+      session->report(diagnosticOf(e, msg::text("DURING.copy_back")));
     }
     for (const auto& f : copied.failed) {
       session->report(copyFailure(f, work));
@@ -499,7 +483,7 @@ JobResult rescueCrashedRun(const JobSpec& spec, const RunOptions& options, const
   try {
     copied = copyResults(spec, work, true, mess);
   } catch (const std::exception& e) {
-    mess << framedDiagnostic(diagnosticOf(e, "copying the result files back"));
+    mess << framedDiagnostic(diagnosticOf(e, msg::text("DURING.copy_back")));
   }
   for (const auto& f : copied.failed) {
     mess << framedDiagnostic(copyFailure(f, work));

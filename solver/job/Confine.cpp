@@ -3,6 +3,7 @@
 #include "Confine.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 
 #include <algorithm>
 
@@ -29,10 +30,7 @@ fs::path folderOf(const fs::path& file) {
 [[noreturn]] void refuse(const std::string& what, const std::string& written, const fs::path& folder,
                          const SourceLocation& at) {
   throw UserError(
-      Diagnostic::fatal("CONFINE_1",
-                        what + " '" + written + "' resolves outside " + folder.string() + " (--confine)", at)
-          .withNote("with --confine every data and result file must lie in the study's folder: "
-                    "no '..' out of it, no absolute path elsewhere, no symbolic link leading out"));
+      msg::make("CONFINE_1", {{"what", what}, {"written", written}, {"folder", folder.string()}}, at));
 }
 
 } // namespace
@@ -41,19 +39,19 @@ void confineExport(const Export& study, const fs::path& outputDirectory) {
   const fs::path folder = folderOf(study.file);
   std::shared_ptr<const SourceFile> source = SourceFile::load(study.file.string());
   if (!outputDirectory.empty() && !inside(fs::absolute(outputDirectory), folder)) {
-    refuse("the output directory", outputDirectory.string(), folder, {});
+    refuse(msg::text("CONFINE_1.f1"), outputDirectory.string(), folder, {});
   }
   const fs::path outputBase = outputDirectory.empty() ? folder : fs::absolute(outputDirectory);
   for (const ExportEntry& e : study.entries) {
     SourceLocation at{source, e.line, 1, static_cast<int>(source->line(e.line).size())};
     if (e.data && !inside(e.path, folder)) {
-      refuse("the data file", e.pathAsWritten, folder, at);
+      refuse(msg::text("CONFINE_1.f2"), e.pathAsWritten, folder, at);
     }
     if (e.result) {
       const fs::path written(e.pathAsWritten);
       const fs::path destination = written.is_absolute() ? written : outputBase / written;
       if (!inside(destination, folder)) {
-        refuse("the result file", e.pathAsWritten, folder, at);
+        refuse(msg::text("CONFINE_1.f3"), e.pathAsWritten, folder, at);
       }
     }
   }
@@ -63,11 +61,11 @@ void confineCommandFile(const fs::path& commandFile, const std::map<int, fs::pat
                         const fs::path& outputDirectory) {
   const fs::path folder = folderOf(commandFile);
   if (!outputDirectory.empty() && !inside(fs::absolute(outputDirectory), folder)) {
-    refuse("the output directory", outputDirectory.string(), folder, {});
+    refuse(msg::text("CONFINE_1.f1"), outputDirectory.string(), folder, {});
   }
   for (const auto& [unit, path] : units) {
     if (!inside(fs::absolute(path), folder)) {
-      refuse("the file of --unit " + std::to_string(unit), path.string(), folder, {});
+      refuse(msg::text("CONFINE_1.f4", {{"unit", std::to_string(unit)}}), path.string(), folder, {});
     }
   }
 }

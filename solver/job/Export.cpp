@@ -1,6 +1,7 @@
 #include "Export.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 
 #include <charconv>
 #include <sstream>
@@ -32,12 +33,7 @@ SourceLocation lineLocation(const std::shared_ptr<const SourceFile>& src, int li
 ExportEntry parseFileLine(const std::vector<std::string>& w, const SourceLocation& at,
                           const std::filesystem::path& base) {
   if (w.size() != 5) {
-    throw UserError(Diagnostic::fatal("EXPORT_2",
-                                      "an " + w[0] +
-                                          " line needs 4 fields: type, path, D/R/C flags and unit; found " +
-                                          std::to_string(w.size() - 1),
-                                      at)
-                        .withNote("example: F mmed mesh.med D 20"));
+    throw UserError(msg::make("EXPORT_2", {{"w", w[0]}, {"w_count", std::to_string(w.size() - 1)}}, at));
   }
   ExportEntry e;
   e.directory = w[0] == "R";
@@ -53,30 +49,23 @@ ExportEntry parseFileLine(const std::vector<std::string>& w, const SourceLocatio
     } else if (c == 'C') {
       e.compressed = true;
     } else {
-      throw UserError(
-          Diagnostic::fatal("EXPORT_3", "unknown flag '" + std::string(1, c) + "' in '" + w[3] + "'", at)
-              .withNote("the flags are D (data), R (result) and C (compressed), e.g. D, R, DR, RC"));
+      throw UserError(msg::make("EXPORT_3", {{"v1c", std::string(1, c)}, {"w", w[3]}}, at));
     }
   }
   if (!e.data && !e.result) {
-    throw UserError(Diagnostic::fatal("EXPORT_3", "the entry is neither data (D) nor result (R)", at));
+    throw UserError(msg::make("EXPORT_3.2", {}, at));
   }
   int unit = -1;
   auto [ptr, ec] = std::from_chars(w[4].data(), w[4].data() + w[4].size(), unit);
   if (ec != std::errc() || ptr != w[4].data() + w[4].size() || unit < 0 || unit > 99) {
-    throw UserError(
-        Diagnostic::fatal("EXPORT_4", "the unit '" + w[4] + "' is not an integer between 0 and 99", at));
+    throw UserError(msg::make("EXPORT_4", {{"w", w[4]}}, at));
   }
   e.unit = unit;
   if (e.data && e.type != "comm" && (unit == 6 || unit == 15)) {
-    throw UserError(
-        Diagnostic::fatal("EXPORT_5", "units 6 and 15 are reserved and cannot hold a data file", at)
-            .withNote("unit 6 is the message file; give the data file another unit, e.g. 20"));
+    throw UserError(msg::make("EXPORT_5", {}, at));
   }
   if (e.compressed && e.data) {
-    throw UserError(
-        Diagnostic::fatal("EXPORT_6", "compressed data files (flag C) are not implemented yet", at)
-            .withNote("uncompress the file and drop the C flag"));
+    throw UserError(msg::make("EXPORT_6", {}, at));
   }
   return e;
 }
@@ -97,7 +86,7 @@ Export Export::read(const std::filesystem::path& file) {
     SourceLocation at = lineLocation(src, n, text);
     if (w[0] == "P") {
       if (w.size() < 2) {
-        throw UserError(Diagnostic::fatal("EXPORT_2", "a P line needs a parameter name", at));
+        throw UserError(msg::make("EXPORT_2.2", {}, at));
       }
       ex.parameters[w[1]] = std::vector<std::string>(w.begin() + 2, w.end());
     } else if (w[0] == "A") {
@@ -107,14 +96,11 @@ Export Export::read(const std::filesystem::path& file) {
       e.line = n;
       if (e.type == "comm" && e.data && !std::filesystem::exists(e.path)) {
         throw UserError(
-            Diagnostic::fatal("EXPORT_7", "the command file '" + e.pathAsWritten + "' does not exist", at)
-                .withNote("paths are relative to the export's folder " + base.string()));
+            msg::make("EXPORT_7", {{"path_as_written", e.pathAsWritten}, {"base", base.string()}}, at));
       }
       ex.entries.push_back(std::move(e));
     } else {
-      throw UserError(Diagnostic::fatal("EXPORT_1", "unknown line type '" + w[0] + "'", at)
-                          .withNote("an export line starts with P (parameter), A (arguments), F (file) or R "
-                                    "(directory)"));
+      throw UserError(msg::make("EXPORT_1", {{"w", w[0]}}, at));
     }
   }
   if (ex.commandFiles().empty()) {
@@ -122,8 +108,7 @@ Export Export::read(const std::filesystem::path& file) {
     at.file = src;
     at.line = std::max(1, src->lineCount());
     at.column = 1;
-    throw UserError(Diagnostic::fatal("EXPORT_8", "the export declares no command file", at)
-                        .withNote("add a line such as: F comm study.comm D 1"));
+    throw UserError(msg::make("EXPORT_8", {}, at));
   }
   return ex;
 }

@@ -3,6 +3,7 @@
 #include "ExportParameters.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -36,10 +37,11 @@ std::optional<double> numberParameter(const Export& study, const NumberRule& rul
     value = rule.whole ? static_cast<double>(std::strtol(text, &end, 10)) : std::strtod(text, &end);
   }
   if (words.size() != 1 || end == words.front().c_str() || *end != '\0' || !rule.inRange(value)) {
-    throw UserError(
-        Diagnostic::fatal(
-            rule.id, fmt::format("P {} expects {}, got '{}'", rule.name, rule.expects, fmt::join(words, " ")))
-            .withNote(fmt::format("{}: write e.g. P {} {}", study.file.string(), rule.name, rule.example)));
+    throw UserError(msg::make(rule.id, {{"name", rule.name},
+                                        {"expects", rule.expects},
+                                        {"words", fmt::join(words, " ")},
+                                        {"file", study.file.string()},
+                                        {"example", rule.example}}));
   }
   return value;
 }

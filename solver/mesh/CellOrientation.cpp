@@ -5,6 +5,7 @@
 #include "solver/mesh/CellOrientation.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/mesh/CellTopology.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 #include "solver/mesh/MeshTransform.hpp"
@@ -43,8 +44,8 @@ std::vector<Piece> linePieces(const Mesh& m, CellId c) {
 }
 
 [[noreturn]] void cannotOrient(const Mesh& m, CellId a, CellId b, const char* what) {
-  throw UserError(Diagnostic::fatal("ORIE_1", "cells " + m.cellName(a) + " and " + m.cellName(b) + " " +
-                                                  what + ": the cells cannot be oriented consistently"));
+  throw UserError(
+      msg::make("ORIE_1", {{"cell_name", m.cellName(a)}, {"cell_name_2", m.cellName(b)}, {"what", what}}));
 }
 
 using PiecesOf = std::vector<Piece> (*)(const Mesh&, CellId);
@@ -139,9 +140,9 @@ OrientationSummary orient(Mesh& m, const std::vector<CellId>& cells, PiecesOf pi
 void checkDimension(const Mesh& m, const std::vector<CellId>& cells, int dim, const char* what) {
   for (const CellId c : cells) {
     if (dimension(m.cellType(c)) != dim) {
-      throw UserError(Diagnostic::fatal("ORIE_2", "cell " + m.cellName(c) + " (" +
-                                                      std::string(name(m.cellType(c))) + ") is not a " +
-                                                      what));
+      throw UserError(msg::make(
+          "ORIE_2",
+          {{"cell_name", m.cellName(c)}, {"name", std::string(name(m.cellType(c)))}, {"what", what}}));
     }
   }
 }

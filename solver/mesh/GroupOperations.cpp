@@ -3,6 +3,7 @@
 #include "solver/mesh/GroupOperations.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/mesh/CellTopology.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 
@@ -176,8 +177,7 @@ std::vector<NodeId> orderedChainNodes(const Mesh& mesh, const std::vector<CellId
   std::map<NodeId, std::vector<std::pair<NodeId, CellId>>> next;
   for (const CellId c : segments) {
     if (dimension(mesh.cellType(c)) != 1) {
-      throw UserError(
-          Diagnostic::fatal("DEFI_GROUP_5", "NOEUD_ORDO: cell " + mesh.cellName(c) + " is not a segment"));
+      throw UserError(msg::make("DEFI_GROUP_5", {{"cell_name", mesh.cellName(c)}}));
     }
     const auto n = mesh.cellNodes(c);
     next[n[0]].emplace_back(n[1], c);
@@ -189,8 +189,7 @@ std::vector<NodeId> orderedChainNodes(const Mesh& mesh, const std::vector<CellId
   std::vector<NodeId> ends;
   for (const auto& [n, adj] : next) {
     if (adj.size() > 2) {
-      throw UserError(
-          Diagnostic::fatal("DEFI_GROUP_5", "NOEUD_ORDO: the segments branch at node " + mesh.nodeName(n)));
+      throw UserError(msg::make("DEFI_GROUP_5.2", {{"node_name", mesh.nodeName(n)}}));
     }
     if (adj.size() == 1) {
       ends.push_back(n);
@@ -203,8 +202,7 @@ std::vector<NodeId> orderedChainNodes(const Mesh& mesh, const std::vector<CellId
     start = ends.front() == *end && ends.size() > 1 ? ends[1] : ends.front();
   }
   if (next.count(start) == 0) {
-    throw UserError(Diagnostic::fatal("DEFI_GROUP_5", "NOEUD_ORDO: the origin node " + mesh.nodeName(start) +
-                                                          " is not on the line"));
+    throw UserError(msg::make("DEFI_GROUP_5.3", {{"node_name", mesh.nodeName(start)}}));
   }
   std::vector<NodeId> order{start};
   std::vector<bool> used(static_cast<std::size_t>(mesh.cellCount()), false);
@@ -233,8 +231,7 @@ std::vector<NodeId> orderedChainNodes(const Mesh& mesh, const std::vector<CellId
       break;
     }
     if (!moved) {
-      throw UserError(
-          Diagnostic::fatal("DEFI_GROUP_5", "NOEUD_ORDO: the segments do not form one connected line"));
+      throw UserError(msg::make("DEFI_GROUP_5.4"));
     }
   }
   return order;

@@ -3,6 +3,7 @@
 #include "solver/mesh/LacCutting.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/mesh/CellTopology.hpp"
 
 #include <algorithm>
@@ -54,14 +55,14 @@ std::vector<Slave> slaveCells(const Mesh& mesh, const std::vector<std::string>& 
     for (const CellId c : *ids) {
       const CellType t = mesh.cellType(c);
       if (dimension(t) != volumeDim - 1) {
-        throw UserError(Diagnostic::fatal("CREALAC_1",
-                                          "DECOUPE_LAC: cell " + mesh.cellName(c) + " of GROUP_MA_ESCL '" +
-                                              g + "' is a " + typeName(t) + ", not a face of the " +
-                                              std::to_string(volumeDim) + "D cells",
-                                          at)
-                            .withNote(volumeDim == 3
-                                          ? "slave cells of a 3D mesh are TRIA3, TRIA6, QUAD4, QUAD8 or QUAD9"
-                                          : "slave cells of a 2D mesh are SEG2 or SEG3"));
+        throw UserError(
+            msg::make("CREALAC_1",
+                      {{"cell_name", mesh.cellName(c)},
+                       {"g", g},
+                       {"type_name", typeName(t)},
+                       {"volume_dim", std::to_string(volumeDim)}},
+                      at)
+                .withNote(volumeDim == 3 ? msg::text("CREALAC_1.n1") : msg::text("CREALAC_1.n2")));
       }
       if (!seen[static_cast<std::size_t>(c)]) {
         seen[static_cast<std::size_t>(c)] = true;
@@ -97,19 +98,14 @@ std::vector<FaceOwner> faceOwners(const Mesh& mesh, const std::vector<Slave>& sl
     const auto& o = owners[sortedVertices(mesh.cellNodes(s.cell), mesh.cellType(s.cell))];
     const std::string cellName = mesh.cellName(s.cell);
     if (o.empty()) {
-      throw UserError(Diagnostic::fatal("CREALAC_2",
-                                        "DECOUPE_LAC: the slave cell " + cellName + " of GROUP_MA_ESCL '" +
-                                            s.zone + "' is the face of no cell of the mesh",
-                                        at)
-                          .withNote("GROUP_MA_ESCL names cells of the boundary of the slave body"));
+      throw UserError(msg::make("CREALAC_2", {{"cell_name", cellName}, {"zone", s.zone}}, at));
     }
     if (o.size() > 1) {
-      throw UserError(Diagnostic::fatal("CREALAC_2",
-                                        "DECOUPE_LAC: the slave cell " + cellName +
-                                            " is a face of two cells (" + mesh.cellName(o[0].cell) + ", " +
-                                            mesh.cellName(o[1].cell) + "): it is not on the boundary",
-                                        at)
-                          .withNote("a contact surface is on the boundary of its body"));
+      throw UserError(msg::make("CREALAC_2.2",
+                                {{"cell_name", cellName},
+                                 {"cell_name_2", mesh.cellName(o[0].cell)},
+                                 {"cell_name_3", mesh.cellName(o[1].cell)}},
+                                at));
     }
     const CellType ownerType = mesh.cellType(o[0].cell);
     const auto ownerFaces = cellFaces(ownerType);
@@ -119,26 +115,20 @@ std::vector<FaceOwner> faceOwners(const Mesh& mesh, const std::vector<Slave>& sl
     std::sort(a.begin(), a.end());
     std::sort(b.begin(), b.end());
     if (a != b) {
-      throw UserError(
-          Diagnostic::fatal("CREALAC_3",
-                            "DECOUPE_LAC: the slave cell " + cellName + " (" +
-                                typeName(mesh.cellType(s.cell)) +
-                                ") does not have the nodes of the face of " + mesh.cellName(o[0].cell) +
-                                " (" + typeName(ownerType) + ", face " + typeName(face.type) + ")",
-                            at)
-              .withNote(
-                  "make the skin cells with the nodes of their volume cells (LINE_QUAD on the whole mesh)"));
+      throw UserError(msg::make("CREALAC_3",
+                                {{"cell_name", cellName},
+                                 {"type_name", typeName(mesh.cellType(s.cell))},
+                                 {"cell_name_2", mesh.cellName(o[0].cell)},
+                                 {"type_name_2", typeName(ownerType)},
+                                 {"type_name_3", typeName(face.type)}},
+                                at));
     }
     if (lacCutKind(ownerType, mesh.cellType(s.cell)) == LacCutKind::Unsupported) {
-      throw UserError(
-          Diagnostic::fatal("CREALAC_4",
-                            "DECOUPE_LAC of a " + typeName(ownerType) + " under a " +
-                                typeName(mesh.cellType(s.cell)) + " slave cell (" + cellName +
-                                ") is not implemented yet",
-                            at)
-              .withNote(
-                  "DECOUPE_LAC cuts TRIA3, QUAD4 (SEG2) and keeps TRIA6, QUAD8 (SEG3) in 2D; cuts TETRA4, "
-                  "TETRA10, PENTA6, PENTA15, PYRAM5, PYRAM13, HEXA8, HEXA20 and keeps HEXA27 in 3D"));
+      throw UserError(msg::make("CREALAC_4",
+                                {{"type_name", typeName(ownerType)},
+                                 {"type_name_2", typeName(mesh.cellType(s.cell))},
+                                 {"cell_name", cellName}},
+                                at));
     }
     out.push_back(o[0]);
   }

@@ -2,6 +2,7 @@
 
 #include "solver/mesh/MeshCheck.hpp"
 
+#include "messages/Messages.hpp"
 #include "solver/mesh/CellTopology.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 
@@ -133,27 +134,21 @@ std::vector<Diagnostic> meshCheckDiagnostics(const Mesh& mesh, const MeshCheckRe
       return mesh.nodeName(p.first) + "=" + mesh.nodeName(p.second);
     };
     out.push_back(
-        Diagnostic::alarm("MESHCHECK_1", std::to_string(r.duplicateNodes.size()) +
-                                             " pair(s) of nodes at the same position: " +
-                                             listNames(r.duplicateNodes, pairName))
-            .withNote("merge them or check the mesh generator; bodies meant to touch need contact"));
+        msg::make("MESHCHECK_1", {{"duplicate_nodes_count", std::to_string(r.duplicateNodes.size())},
+                                  {"list_names", listNames(r.duplicateNodes, pairName)}}));
   }
   if (!r.degenerateCells.empty()) {
     out.push_back(
-        Diagnostic::alarm("MESHCHECK_2", std::to_string(r.degenerateCells.size()) +
-                                             " degenerate cell(s) (repeated node or zero-length edge): " +
-                                             listNames(r.degenerateCells, cellName)));
+        msg::make("MESHCHECK_2", {{"degenerate_cells_count", std::to_string(r.degenerateCells.size())},
+                                  {"list_names", listNames(r.degenerateCells, cellName)}}));
   }
   if (!r.invertedCells.empty()) {
-    out.push_back(Diagnostic::alarm("MESHCHECK_3", std::to_string(r.invertedCells.size()) +
-                                                       " inverted cell(s) (negative jacobian): " +
-                                                       listNames(r.invertedCells, cellName))
-                      .withNote("renumber the cells' nodes (MED and code_aster orient volumes differently)"));
+    out.push_back(msg::make("MESHCHECK_3", {{"inverted_cells_count", std::to_string(r.invertedCells.size())},
+                                            {"list_names", listNames(r.invertedCells, cellName)}}));
   }
   if (!r.flatCells.empty()) {
-    out.push_back(Diagnostic::alarm(
-        "MESHCHECK_4", std::to_string(r.flatCells.size()) +
-                           " flat cell(s) (measure below APLAT): " + listNames(r.flatCells, cellName)));
+    out.push_back(msg::make("MESHCHECK_4", {{"flat_cells_count", std::to_string(r.flatCells.size())},
+                                            {"list_names", listNames(r.flatCells, cellName)}}));
   }
   return out;
 }

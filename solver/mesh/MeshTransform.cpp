@@ -3,6 +3,7 @@
 #include "solver/mesh/MeshTransform.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/mesh/CellOrientation.hpp"
 #include "solver/mesh/CellTopology.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
@@ -142,8 +143,7 @@ void mirrorMesh(Mesh& mesh, const Point3& point, const Point3& axis1, const Poin
   }
   const double nn = norm(normal);
   if (nn == 0) {
-    throw UserError(
-        Diagnostic::fatal("MODI_MAILLAGE_2", "SYMETRIE: the axes do not define a line or a plane"));
+    throw UserError(msg::make("MODI_MAILLAGE_2"));
   }
   const Point3 u = (1.0 / nn) * normal;
   for (NodeId n = 0; n < mesh.nodeCount(); ++n) {
@@ -166,9 +166,9 @@ SkinOrientationSummary orientSkin(Mesh& mesh, const std::vector<CellId>& skinCel
   for (const CellId s : skin) {
     const CellType t = mesh.cellType(s);
     if (dimension(t) != top - 1) {
-      throw UserError(Diagnostic::fatal("ORIE_PEAU_3",
-                                        "cell " + mesh.cellName(s) + " (" + std::string(name(t)) +
-                                            ") is not a skin cell of a " + std::to_string(top) + "D mesh"));
+      throw UserError(msg::make(
+          "ORIE_PEAU_3",
+          {{"cell_name", mesh.cellName(s)}, {"name", std::string(name(t))}, {"top", std::to_string(top)}}));
     }
   }
   const auto bounded = boundedVolumes(mesh, skin, volumes);
@@ -177,10 +177,7 @@ SkinOrientationSummary orientSkin(Mesh& mesh, const std::vector<CellId>& skinCel
   for (std::size_t i = 0; i < skin.size(); ++i) {
     const auto& sides = bounded[i];
     if (sides.size() > 1) {
-      throw UserError(Diagnostic::fatal("ORIE_PEAU_2", "skin cell " + mesh.cellName(skin[i]) +
-                                                           " lies between two volume cells (internal skin)")
-                          .withNote("give the cells of the side the normal must leave (GROUP_MA_INTERNE / "
-                                    "GROUP_MA_VOLU / GROUP_MA_SURF)"));
+      throw UserError(msg::make("ORIE_PEAU_2", {{"cell_name", mesh.cellName(skin[i])}}));
     }
     if (sides.size() == 1) {
       fixed[i] = true;

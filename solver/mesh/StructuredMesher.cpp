@@ -5,6 +5,7 @@
 #include "solver/mesh/StructuredMesher.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/mesh/CellTopology.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 
@@ -161,7 +162,7 @@ private:
 };
 
 [[noreturn]] void refuse(const std::string& what) {
-  throw UserError(Diagnostic::fatal("MESHGEN_1", "structured mesh: " + what));
+  throw UserError(msg::make("MESHGEN_1", {{"what", what}}));
 }
 
 } // namespace
@@ -171,12 +172,12 @@ Mesh buildStructuredMesh(const StructuredSpec& spec) {
   const CellShape shape = shapeOf(t);
   const int dim = dimension(t);
   if (dim < 2 || shape == CellShape::Pyramid || t == CellType::TRIA7) {
-    refuse(std::string("cell type ") + std::string(name(t)) + " is not implemented yet");
+    refuse(msg::text("MESHGEN_1.f1", {{"name", std::string(name(t))}}));
   }
   for (int d = 0; d < dim; ++d) {
     const auto k = static_cast<std::size_t>(d);
     if (spec.divisions[k] < 1 || spec.divisions[k] > 100000 || !(spec.lengths[k] > 0.0)) {
-      refuse("divisions must be >= 1 and lengths > 0");
+      refuse(msg::text("MESHGEN_1.f2"));
     }
   }
   Builder b(spec);

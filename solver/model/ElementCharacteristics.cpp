@@ -4,6 +4,7 @@
 #include "solver/model/ElementCharacteristics.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/model/Model.hpp"
 
 #include <fmt/format.h>
@@ -20,16 +21,12 @@ void checkDiscreteElementsCovered(const Model& model, const ElementCharacteristi
   }
   for (CellId c : model.cellsOfKind(ElementKind::Discrete)) {
     if (!covered[static_cast<std::size_t>(c)]) {
-      throw UserError(Diagnostic::fatal("CARA_5",
-                                        fmt::format("discrete element {} (node {}) has no stiffness{}",
-                                                    model.mesh->cellName(c),
-                                                    model.mesh->nodeName(model.mesh->cellNodes(c)[0]),
-                                                    cara == nullptr ? ": the command has no CARA_ELEM" : ""),
-                                        at)
-                          .withNote(fmt::format(
-                              "give its stiffness with AFFE_CARA_ELEM {}=_F(GROUP_MA=..., CARA='K_T_D_N', "
-                              "VALE=...) and pass CARA_ELEM= to the command",
-                              model.components == 3 ? "DISCRET" : "DISCRET_2D")));
+      throw UserError(msg::make("CARA_5",
+                                {{"cell_name", model.mesh->cellName(c)},
+                                 {"node_name", model.mesh->nodeName(model.mesh->cellNodes(c)[0])},
+                                 {"cara", cara == nullptr ? ": the command has no CARA_ELEM" : ""},
+                                 {"components", model.components == 3 ? "DISCRET" : "DISCRET_2D"}},
+                                at));
     }
   }
 }

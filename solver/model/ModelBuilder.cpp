@@ -3,6 +3,7 @@
 #include "solver/model/ModelBuilder.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -15,13 +16,8 @@ void setComponents(Model& model, int components, const std::string& name, const 
   const bool first =
       model.cellsOfKind(ElementKind::Volume).empty() && model.cellsOfKind(ElementKind::Discrete).empty();
   if (!first && model.components != components) {
-    throw UserError(
-        Diagnostic::fatal("MODEL_3",
-                          fmt::format("MODELISATION='{}' has {} displacement components, the model "
-                                      "already has {}",
-                                      name, components, model.components),
-                          at)
-            .withNote("a model is either 2D (D_PLAN, C_PLAN, AXIS, 2D_DIS_T) or 3D (3D, DIS_T)"));
+    throw UserError(msg::make(
+        "MODEL_3", {{"name", name}, {"components", components}, {"components_2", model.components}}, at));
   }
   model.components = components;
 }
@@ -61,38 +57,24 @@ void assignModelling(Model& model, std::span<const CellId> cells, const std::str
   if (name == "DIS_T" || name == "2D_DIS_T") {
     setComponents(model, name == "DIS_T" ? 3 : 2, name, at);
     if (assignDiscrete(model, cells) == 0) {
-      throw UserError(
-          Diagnostic::fatal("MODEL_2", fmt::format("no POI1 cell in the selection can carry '{}'", name), at)
-              .withNote("discrete springs go on point cells (POI1): create them with CREA_MAILLAGE "
-                        "CREA_POI1 or in the mesher"));
+      throw UserError(msg::make("MODEL_2", {{"name", name}}, at));
     }
     return;
   }
   const auto variant = fem::modellingVariantFromName(name);
   if (!variant) {
-    throw UserError(
-        Diagnostic::fatal("MODEL_1", fmt::format("MODELISATION='{}' is not implemented yet", name), at)
-            .withNote("available: 3D, D_PLAN, C_PLAN, AXIS, their mean-dilatation variants 3D_SI, "
-                      "D_PLAN_SI, AXIS_SI, and DIS_T, 2D_DIS_T"));
+    throw UserError(msg::make("MODEL_1", {{"name", name}}, at));
   }
   const auto m = std::optional<fem::Modelling>(variant->modelling);
   setComponents(model, fem::spaceDimension(*m), name, at);
   if (model.hasVolume && model.modelling != *m) {
-    throw UserError(Diagnostic::fatal("MODEL_3",
-                                      fmt::format("MODELISATION='{}' on a model that already has '{}' cells",
-                                                  name, fem::modellingName(model.modelling)),
-                                      at)
-                        .withNote("one model carries one volume modelisation"));
+    throw UserError(msg::make("MODEL_3.2",
+                              {{"name", name}, {"modelling_name", fem::modellingName(model.modelling)}}, at));
   }
   if (assignContinuum(model, cells, *variant) == 0 && !model.hasVolume) {
     throw UserError(
-        Diagnostic::fatal("MODEL_2",
-                          fmt::format("no cell of the selection has dimension {}, so none can carry "
-                                      "MODELISATION='{}'",
-                                      fem::spaceDimension(*m), name),
-                          at)
-            .withNote(fem::spaceDimension(*m) == 2 ? "2D modelisations need surface cells (TRIA, QUAD)"
-                                                   : "'3D' needs volume cells (TETRA, PENTA, PYRAM, HEXA)"));
+        msg::make("MODEL_2.2", {{"space_dimension", fem::spaceDimension(*m)}, {"name", name}}, at)
+            .withNote(fem::spaceDimension(*m) == 2 ? msg::text("MODEL_2.n1") : msg::text("MODEL_2.n2")));
   }
   model.modelling = *m;
   model.hasVolume = true;
@@ -112,7 +94,7 @@ void finishModel(Model& model, const SourceLocation& at) {
     }
   }
   if (!any) {
-    throw UserError(Diagnostic::fatal("MODEL_6", "the model has no element", at));
+    throw UserError(msg::make("MODEL_6", {}, at));
   }
   for (NodeId n = 0; n < mesh.nodeCount(); ++n) {
     if (!model.nodeActive(n)) {
@@ -120,19 +102,10 @@ void finishModel(Model& model, const SourceLocation& at) {
     }
     const Point3 x = mesh.point(n);
     if (model.components == 2 && std::fabs(x[2]) > 0.0) {
-      throw UserError(
-          Diagnostic::fatal("MODEL_4",
-                            fmt::format("node {} has z = {}, a 2D model needs every node in the plane z = 0",
-                                        mesh.nodeName(n), x[2]),
-                            at)
-              .withNote("mesh the section in the (x, y) plane"));
+      throw UserError(msg::make("MODEL_4", {{"node_name", mesh.nodeName(n)}, {"x", x[2]}}, at));
     }
     if (model.hasVolume && model.modelling == fem::Modelling::Axisymmetric && x[0] < 0.0) {
-      throw UserError(
-          Diagnostic::fatal(
-              "MODEL_5", fmt::format("node {} has r = x = {} < 0 in an AXIS model", mesh.nodeName(n), x[0]),
-              at)
-              .withNote("in AXIS, x is the radius: the section lies in x >= 0, the axis is x = 0"));
+      throw UserError(msg::make("MODEL_5", {{"node_name", mesh.nodeName(n)}, {"x", x[0]}}, at));
     }
   }
 }

@@ -3,6 +3,7 @@
 #include "solver/model/RepeatedConditions.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/model/Model.hpp"
 
 #include <cmath>
@@ -46,17 +47,17 @@ public:
     }
     const std::string name = mesh != nullptr ? mesh->nodeName(node) : fmt::format("#{}", node + 1);
     const std::string cmp = Model::componentName(component);
-    throw UserError(
-        Diagnostic::fatal(
-            "LOAD_11",
-            fmt::format("node {}, DOF {}: imposed twice with different values ({} = {} by {} of "
-                        "load {}, and {} = {} by {} of load {})",
-                        name, cmp, cmp, f.value, f.origin, other.name, cmp, value, origin, self.name),
-            self.location)
-            .withNote(sameScaling
-                          ? "a DOF takes one value only: remove one of the two conditions"
-                          : "the two loads are scaled by different FONC_MULT, so their values differ at "
-                            "some instant: impose the DOF in one load only"));
+    throw UserError(msg::make("LOAD_11",
+                              {{"name", name},
+                               {"cmp", cmp},
+                               {"f", f.value},
+                               {"origin", f.origin},
+                               {"name_2", other.name},
+                               {"value", value},
+                               {"origin_2", origin},
+                               {"name_3", self.name}},
+                              self.location)
+                        .withNote(sameScaling ? msg::text("LOAD_11.n1") : msg::text("LOAD_11.n2")));
   }
 
 private:

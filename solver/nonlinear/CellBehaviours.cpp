@@ -3,6 +3,7 @@
 #include "solver/nonlinear/CellBehaviours.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/behaviour/LinearElastic.hpp"
 #include "solver/behaviour/VonMisesIsotropicLinear.hpp"
 
@@ -16,11 +17,7 @@ namespace {
 std::unique_ptr<behaviour::Behaviour> makeBehaviour(const Material& m, const std::string& relation, CellId c,
                                                     const Mesh& mesh, const SourceLocation& at) {
   if (!m.elastic) {
-    throw UserError(Diagnostic::fatal("MATER_7",
-                                      fmt::format("material {} (on cell {}) has no ELAS parameters", m.name,
-                                                  mesh.cellName(c)),
-                                      at)
-                        .withNote("add ELAS=_F(E=..., NU=...) to DEFI_MATERIAU"));
+    throw UserError(msg::make("MATER_7", {{"name", m.name}, {"cell_name", mesh.cellName(c)}}, at));
   }
   behaviour::ElasticParameters e{m.elastic->youngModulus, m.elastic->poissonRatio};
   if (relation == "ELAS") {
@@ -28,12 +25,7 @@ std::unique_ptr<behaviour::Behaviour> makeBehaviour(const Material& m, const std
   }
   if (relation == "VMIS_ISOT_LINE") {
     if (!m.hardening) {
-      throw UserError(
-          Diagnostic::fatal("MATER_8",
-                            fmt::format("RELATION='VMIS_ISOT_LINE' on cell {} needs ECRO_LINE in material {}",
-                                        mesh.cellName(c), m.name),
-                            at)
-              .withNote("add ECRO_LINE=_F(D_SIGM_EPSI=..., SY=...) to DEFI_MATERIAU"));
+      throw UserError(msg::make("MATER_8", {{"cell_name", mesh.cellName(c)}, {"name", m.name}}, at));
     }
     return std::make_unique<behaviour::VonMisesIsotropicLinear>(
         e, behaviour::LinearHardening{m.hardening->tangentModulus, m.hardening->yieldStress});
@@ -59,11 +51,7 @@ CellBehaviours::CellBehaviours(const Model& model, const MaterialField& material
     }
     const Material* m = materials.material(c);
     if (m == nullptr) {
-      throw UserError(
-          Diagnostic::fatal("MATER_6", fmt::format("cell {} of the model has no material", mesh.cellName(c)),
-                            at)
-              .withNote("assign a material to every cell of the model in AFFE_MATERIAU (TOUT='OUI' or "
-                        "the missing groups)"));
+      throw UserError(msg::make("MATER_6", {{"cell_name", mesh.cellName(c)}}, at));
     }
     const std::string& relation = relations[static_cast<std::size_t>(c)];
     auto key = std::make_pair(m, relation);

@@ -3,6 +3,7 @@
 #include "solver/nonlinear/ConvergenceTableOutput.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/session/Session.hpp"
 
 #include <fmt/format.h>
@@ -25,8 +26,7 @@ ConvergenceTableOutput::ConvergenceTableOutput(const ConvergenceDisplay& display
     }
     unitFile_ = std::make_unique<std::ofstream>(session.unitPath(unit, display.unitAt, false), std::ios::app);
     if (!*unitFile_) {
-      throw UserError(Diagnostic::fatal("SNL_22", fmt::format("AFFICHAGE: unit {} cannot be written", unit),
-                                        display.unitAt));
+      throw UserError(msg::make("SNL_22", {{"unit", unit}}, display.unitAt));
     }
     buffer_.unit = unitFile_.get();
   }

@@ -3,6 +3,7 @@
 #include "solver/nonlinear/FieldExtraction.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -37,9 +38,9 @@ double reduce(const std::vector<double>& v, const std::string& how) {
 
 [[noreturn]] void missing(const FieldExtraction& e, const std::string& what,
                           const std::vector<std::string>& has) {
-  throw UserError(Diagnostic::fatal("SNL_20", fmt::format("{}: {} has no {}", e.field, e.field, what), e.at)
-                      .withNote(has.empty() ? std::string("check NOM_CMP and POINT")
-                                            : fmt::format("available: {}", fmt::join(has, ", "))));
+  throw UserError(msg::make("SNL_20", {{"field", e.field}, {"what", what}}, e.at)
+                      .withNote(has.empty() ? msg::text("SNL_20.n1")
+                                            : msg::text("SNL_20.n2", {{"join", fmt::join(has, ", ")}})));
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 #include "solver/nonlinear/NewtonDriver.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/nonlinear/PhaseTimes.hpp"
 #include "solver/nonlinear/SymmetricTangent.hpp"
 
@@ -409,14 +410,7 @@ StepOutcome NewtonDriver::step(const MechanicalState& start, double time, Mechan
     if (test.nullLoad && !nullLoadNoted) {
       nullLoadNoted = true;
       if (std::max(forceScale_, stepScale_) <= 0.0 && settings_.resiGlobMaxi <= 0.0 && maxi > forceRoundOff) {
-        throw UserError(
-            Diagnostic::fatal("SNL_11",
-                              fmt::format("INST {}: the external forces and the reactions are zero, so "
-                                          "RESI_GLOB_RELA has no reference, and no earlier step converged "
-                                          "under load gives one (the residual is {:.3e})",
-                                          time, maxi))
-                .withNote("check that the load should vanish at this instant; otherwise give an absolute "
-                          "criterion, CONVERGENCE=_F(RESI_GLOB_MAXI=...), as code_aster requires"));
+        throw UserError(msg::make("SNL_11", {{"time", time}, {"maxi", maxi}}));
       }
       log_ << fmt::format(
           "   |      | zero load and reactions: RESI_GLOB_RELA shown as -1, test in absolute, "

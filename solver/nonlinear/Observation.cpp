@@ -3,6 +3,7 @@
 #include "solver/nonlinear/Observation.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -80,10 +81,7 @@ void Observations::observe(int index, double time,
     }
     const Field* f = field(item.what.field);
     if (f == nullptr) {
-      throw UserError(Diagnostic::fatal(
-          "SNL_20",
-          fmt::format("OBSERVATION: the state has no field {} (CONT_NOEU needs CONTACT)", item.what.field),
-          item.what.at));
+      throw UserError(msg::make("SNL_20.2", {{"field", item.what.field}}, item.what.at));
     }
     for (const ExtractedValue& v : item.what.extract(*f, mesh)) {
       std::vector<std::pair<std::string, Value>> row{

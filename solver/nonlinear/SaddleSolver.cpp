@@ -3,6 +3,7 @@
 #include "solver/nonlinear/SaddleSolver.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 
 #include <Eigen/SparseCholesky>
 #include <algorithm>
@@ -54,14 +55,7 @@ void SaddleSolver::checkSingularity(const Eigen::SparseMatrix<double>& k) const 
     const double diag = a.coeff(i, i);
     if (!(std::fabs(d(p)) > 1.0e-8 * std::fabs(diag)) || diag == 0.0) {
       throw UserError(
-          Diagnostic::fatal(
-              "SOLVE_1",
-              fmt::format("the stiffness matrix is singular: {} is free (nothing holds it, a "
-                          "rigid-body motion or a mechanism; pivot {:.3g} for a diagonal of {:.3g})",
-                          dofs_.describe(i, mesh_), d(p), diag))
-              .withNote("block this motion with DDL_IMPO (AFFE_CHAR_MECA) or MECA_IMPO (AFFE_CHAR_CINE), or "
-                        "hold the body with springs (MODELISATION='DIS_T' or '2D_DIS_T' on POI1 cells with "
-                        "AFFE_CARA_ELEM DISCRET K_T_D_N), as §4.4.2 of the notice explains"));
+          msg::make("SOLVE_1", {{"describe", dofs_.describe(i, mesh_)}, {"d", d(p)}, {"diag", diag}}));
     }
   }
 }
@@ -89,11 +83,7 @@ double meanDiagonal(const StiffnessMatrix& k) {
 
 // SOLVE_2: the backend failed (a factorisation, or an iterative solve that did not converge).
 UserError solverFailure(const linalg::LinearSolverError& e) {
-  return UserError(
-      Diagnostic::fatal("SOLVE_2", fmt::format("the linear solver failed: {}", e.what()))
-          .withNote("an iterative SOLVEUR (GCPC, PETSC) that does not converge: raise NMAX_ITER, "
-                    "choose another PRE_COND, or tune it with OPTION_PETSC; or use "
-                    "METHODE='MUMPS' (the default)"));
+  return UserError(msg::make("SOLVE_2", {{"what", e.what()}}));
 }
 
 bool samePattern(const linalg::SparsePattern& a, const linalg::SparsePattern& b) {
@@ -372,12 +362,9 @@ void SaddleSolver::factorize(const StiffnessMatrix& k, bool symmetric) {
     const int eq = e.equation() >= n && e.equation() < n + static_cast<int>(keptRows_.size())
                        ? n + keptRows_[static_cast<std::size_t>(e.equation() - n)]
                        : e.equation();
-    throw UserError(
-        Diagnostic::fatal(
-            "SOLVE_1", fmt::format("the stiffness matrix is singular ({} found a null pivot{})", e.backend(),
-                                   eq >= 0 && eq < dofs_.size() ? " at " + dofs_.describe(eq, mesh_) : ""))
-            .withNote("block the free motions with DDL_IMPO or AFFE_CHAR_CINE, or hold the body with DIS_T "
-                      "springs (§4.4.2 of the notice); check that no linear relation repeats another"));
+    throw UserError(msg::make(
+        "SOLVE_1.2", {{"backend", e.backend()},
+                      {"eq", eq >= 0 && eq < dofs_.size() ? " at " + dofs_.describe(eq, mesh_) : ""}}));
   } catch (const linalg::LinearSolverError& e) {
     throw solverFailure(e);
   }
@@ -462,9 +449,7 @@ void SaddleSolver::solveBordered(Eigen::Ref<Eigen::MatrixXd> x) {
   }
   timings_.solve += secondsSince(start);
   if (!x.allFinite()) {
-    throw UserError(Diagnostic::fatal("SOLVE_3", "the linear solve produced non-finite values")
-                        .withNote("the system is probably singular or badly conditioned: check the boundary "
-                                  "conditions and the material parameters"));
+    throw UserError(msg::make("SOLVE_3"));
   }
 }
 

@@ -2,6 +2,7 @@
 // earlier one on shared cells). Command variables (AFFE_VARC) are refused as not implemented yet.
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/database/MeshConcept.hpp"
 #include "solver/inputs/Selection.hpp"
@@ -30,8 +31,7 @@ Value runAffeMateriau(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
   for (const char* name : {"AFFE_VARC", "AFFE_COMPOR", "CHAM_MATER"}) {
     if (kw.has(name)) {
-      throw UserError(Diagnostic::fatal(
-          "MATER_4", fmt::format("AFFE_MATERIAU {} is not implemented yet", name), kw.locationOf(name)));
+      throw UserError(msg::make("MATER_4", {{"name", name}}, kw.locationOf(name)));
     }
   }
   auto field = std::make_shared<MaterialField>();
@@ -40,9 +40,7 @@ Value runAffeMateriau(OperatorCall& call) {
   for (const KeywordTree& affe : kw.occurrences("AFFE")) {
     auto materials = affe.conceptValues("MATER");
     if (materials.size() != 1) {
-      throw UserError(Diagnostic::fatal("MATER_5",
-                                        "several materials in one AFFE occurrence are not implemented yet",
-                                        affe.locationOf("MATER")));
+      throw UserError(msg::make("MATER_5", {}, affe.locationOf("MATER")));
     }
     auto material = conceptData<Material>(materials.front());
     STELLA_ASSERT(material != nullptr, "MATER holds no material");

@@ -15,6 +15,7 @@
 // not implemented yet. The methods are described in solver/post/DerivedFields.hpp.
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/assembly/ExternalForces.hpp"
 #include "solver/assembly/NodalForces.hpp"
 #include "solver/database/ConceptStore.hpp"
@@ -63,9 +64,7 @@ std::vector<std::string> requestedOptions(const KeywordTree& kw) {
   for (const char* k : {"ENERGIE", "PROPRIETES", "HYDRAULIQUE", "CHAM_UTIL", "SOUS_POINT", "EXCIT",
                         "NUME_MODE", "NOEUD_CMP", "NOM_CAS", "FREQ", "LIST_FREQ", "LIST_ORDRE"}) {
     if (kw.has(k)) {
-      throw UserError(Diagnostic::fatal("CALC_2", fmt::format("CALC_CHAMP {} is not implemented yet", k),
-                                        kw.locationOf(k))
-                          .withNote(implementedList()));
+      throw UserError(msg::make("CALC_2", {{"k", k}}, kw.locationOf(k)).withNote(implementedList()));
     }
   }
   std::vector<std::string> out;
@@ -77,9 +76,7 @@ std::vector<std::string> requestedOptions(const KeywordTree& kw) {
     for (const auto& option : kw.texts(keyword)) {
       if (std::find(known.begin(), known.end(), option) == known.end()) {
         throw UserError(
-            Diagnostic::fatal("CALC_2",
-                              fmt::format("CALC_CHAMP {}='{}' is not implemented yet", keyword, option),
-                              kw.locationOf(keyword))
+            msg::make("CALC_2.2", {{"keyword", keyword}, {"option", option}}, kw.locationOf(keyword))
                 .withNote(implementedList()));
       }
       if (std::find(out.begin(), out.end(), option) == out.end()) {
@@ -88,8 +85,7 @@ std::vector<std::string> requestedOptions(const KeywordTree& kw) {
     }
   }
   if (out.empty()) {
-    throw UserError(Diagnostic::fatal("CALC_2", "CALC_CHAMP asks for no field", kw.location())
-                        .withNote(implementedList()));
+    throw UserError(msg::make("CALC_2.3", {}, kw.location()).withNote(implementedList()));
   }
   return out;
 }
@@ -108,10 +104,8 @@ std::vector<ResultStep*> selectedSteps(Result& result, const std::string& name, 
     for (auto n : kw.integers("NUME_ORDRE")) {
       ResultStep* s = result.stepNumber(static_cast<int>(n));
       if (s == nullptr) {
-        throw UserError(
-            Diagnostic::fatal("CALC_1", fmt::format("result {} has no NUME_ORDRE {}", name, n),
-                              kw.locationOf("NUME_ORDRE"))
-                .withNote(fmt::format("its stored steps (NUME_ORDRE, INST): {}", stepList(result))));
+        throw UserError(msg::make("CALC_1", {{"name", name}, {"n", n}, {"step_list", stepList(result)}},
+                                  kw.locationOf("NUME_ORDRE")));
       }
       out.push_back(s);
     }
@@ -132,10 +126,8 @@ std::vector<ResultStep*> selectedSteps(Result& result, const std::string& name, 
     for (double t : times) {
       const ResultStep* s = result.stepAtTime(t, precision, absolute);
       if (s == nullptr) {
-        throw UserError(
-            Diagnostic::fatal("CALC_1", fmt::format("result {} has no step at INST {}", name, t),
-                              kw.locationOf(keyword))
-                .withNote(fmt::format("its stored steps (NUME_ORDRE, INST): {}", stepList(result))));
+        throw UserError(msg::make("CALC_1.2", {{"name", name}, {"t", t}, {"step_list", stepList(result)}},
+                                  kw.locationOf(keyword)));
       }
       out.push_back(result.stepNumber(s->number));
     }
@@ -188,13 +180,13 @@ private:
   const Field& source(const std::string& name, const std::string& forOption) {
     const Field* f = step_.field(name);
     if (f == nullptr) {
-      throw UserError(
-          Diagnostic::fatal("CALC_4",
-                            fmt::format("result {} has no {} at NUME_ORDRE {}: {} is computed from it",
-                                        resultName_, name, step_.number, forOption),
-                            kw_.location())
-              .withNote(name == "VARI_ELGA" ? "internal variables are stored by STAT_NON_LINE"
-                                            : "the result must hold the field the option starts from"));
+      throw UserError(msg::make("CALC_4",
+                                {{"result_name", resultName_},
+                                 {"name", name},
+                                 {"number", step_.number},
+                                 {"for_option", forOption}},
+                                kw_.location())
+                          .withNote(name == "VARI_ELGA" ? msg::text("CALC_4.n1") : msg::text("CALC_4.n2")));
     }
     return *f;
   }
@@ -258,11 +250,7 @@ void addSpringForces(const ForceContext& ctx, const ResultStep& step, const std:
   }
   const Field* depl = step.field("DEPL");
   if (depl == nullptr || depl->support() != FieldSupport::Node) {
-    throw UserError(Diagnostic::fatal(
-        "CALC_4",
-        fmt::format("result {} has no DEPL at NUME_ORDRE {}: the spring forces of FORC_NODA need it", name,
-                    step.number),
-        kw.locationOf("FORCE")));
+    throw UserError(msg::make("CALC_4.2", {{"name", name}, {"number", step.number}}, kw.locationOf("FORCE")));
   }
   for (const DiscreteSpring& spring : ctx.cara->springs) {
     for (int c = 0; c < ctx.dofs.components(); ++c) {
@@ -280,11 +268,7 @@ void computeForces(ForceContext& ctx, ResultStep& step, const std::vector<std::s
                    const std::string& name, const KeywordTree& kw) {
   const Field* sief = step.field("SIEF_ELGA");
   if (sief == nullptr) {
-    throw UserError(Diagnostic::fatal(
-        "CALC_4",
-        fmt::format("result {} has no SIEF_ELGA at NUME_ORDRE {}: FORC_NODA and REAC_NODA need it", name,
-                    step.number),
-        kw.locationOf("FORCE")));
+    throw UserError(msg::make("CALC_4.3", {{"name", name}, {"number", step.number}}, kw.locationOf("FORCE")));
   }
   const Field* depl = step.field("DEPL");
   if (ctx.strains != nullptr && (depl == nullptr || depl->support() != FieldSupport::Node)) {
@@ -301,9 +285,7 @@ void computeForces(ForceContext& ctx, ResultStep& step, const std::vector<std::s
       step.fields["FORC_NODA"] = nodalField(ctx.model, ctx.dofs, forc, "DEPL_R");
     } else if (option == "REAC_NODA") {
       if (ctx.loads == nullptr) {
-        throw UserError(Diagnostic::fatal(
-            "CALC_5", fmt::format("the loads of result {} are unknown, REAC_NODA cannot be formed", name),
-            kw.locationOf("FORCE")));
+        throw UserError(msg::make("CALC_5", {{"name", name}}, kw.locationOf("FORCE")));
       }
       const Eigen::VectorXd fext = externalForces(*ctx.loads, step.time, ctx.dofs, ctx.materials, ctx.cache);
       step.fields["REAC_NODA"] = nodalField(ctx.model, ctx.dofs, forc - fext, "DEPL_R");
@@ -320,8 +302,7 @@ std::shared_ptr<const ElementCharacteristics> characteristics(const KeywordTree&
   auto cara = conceptData<ElementCharacteristics>(kw.conceptValue("CARA_ELEM"));
   STELLA_ASSERT(cara != nullptr, "CARA_ELEM holds no element characteristics");
   if (cara->model.get() != &model) {
-    throw UserError(Diagnostic::fatal("CARA_6", "CARA_ELEM was defined on another model than the result's",
-                                      kw.locationOf("CARA_ELEM")));
+    throw UserError(msg::make("CARA_6.2", {}, kw.locationOf("CARA_ELEM")));
   }
   return cara;
 }
@@ -334,8 +315,7 @@ Value runCalcChamp(OperatorCall& call) {
   STELLA_ASSERT(source != nullptr, "RESULTAT holds no result");
   auto model = std::dynamic_pointer_cast<Model>(source->model);
   if (!model) {
-    throw UserError(Diagnostic::fatal("CALC_3", fmt::format("result {} carries no model", concept_->name),
-                                      kw.locationOf("RESULTAT")));
+    throw UserError(msg::make("CALC_3", {{"name", concept_->name}}, kw.locationOf("RESULTAT")));
   }
   auto materials = std::dynamic_pointer_cast<MaterialField>(source->material);
   std::vector<CellId> group;
@@ -343,10 +323,7 @@ Value runCalcChamp(OperatorCall& call) {
     group = selectCells(*model->mesh, kw);
     if (std::find(options.begin(), options.end(), "FORC_NODA") != options.end() ||
         std::find(options.begin(), options.end(), "REAC_NODA") != options.end()) {
-      throw UserError(Diagnostic::fatal("CALC_2",
-                                        "CALC_CHAMP FORCE restricted to GROUP_MA is not implemented yet",
-                                        kw.locationOf("GROUP_MA"))
-                          .withNote("compute FORC_NODA / REAC_NODA on the whole model (TOUT='OUI')"));
+      throw UserError(msg::make("CALC_2.4", {}, kw.locationOf("GROUP_MA")));
     }
   }
   const std::vector<bool> cells = selectedVolumeCells(*model, group);

@@ -6,6 +6,7 @@
 // default). MAILLAGE is the result's mesh. INFO=2 prints the range of PRES of each step.
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/model/Model.hpp"
@@ -24,8 +25,8 @@ namespace stella {
 
 namespace {
 
-UserError error(const std::string& what, const SourceLocation& at, const std::string& fix) {
-  return UserError(Diagnostic::fatal("CALC_PRESSION_1", what, at).withNote(fix));
+UserError error(std::string_view key, msg::Args args, const SourceLocation& at) {
+  return UserError(msg::make(key, args, at));
 }
 
 std::vector<ResultStep*> selectedSteps(Result& r, const std::string& name, const KeywordTree& kw) {
@@ -39,8 +40,7 @@ std::vector<ResultStep*> selectedSteps(Result& r, const std::string& name, const
   for (const double t : kw.reals("INST")) {
     const ResultStep* s = r.stepAtTime(t, kw.real("PRECISION"), kw.text("CRITERE") == "ABSOLU");
     if (s == nullptr) {
-      throw error(fmt::format("result {} has no step at INST {}", name, t), kw.locationOf("INST"),
-                  "give a stored time or widen PRECISION");
+      throw error("CALC_PRESSION_1", {{"name", name}, {"t", t}}, kw.locationOf("INST"));
     }
     out.push_back(r.stepNumber(s->number));
   }
@@ -52,11 +52,10 @@ std::vector<CellId> skinCells(const Mesh& mesh, const KeywordTree& kw) {
   const auto cells = cellsOfGroups(mesh, kw, "GROUP_MA");
   for (const CellId c : cells) {
     if (dimension(mesh.cellType(c)) != mesh.dimension() - 1) {
-      throw error(fmt::format("cell {} ({}) of GROUP_MA is not a skin cell of this {}D mesh",
-                              mesh.cellName(c), name(mesh.cellType(c)), mesh.dimension()),
-                  kw.locationOf("GROUP_MA"),
-                  mesh.dimension() == 2 ? "give groups of edges (SEG2, SEG3)"
-                                        : "give groups of faces (TRIA, QUAD)");
+      throw error(
+          mesh.dimension() == 2 ? "CALC_PRESSION_1.skin_2d" : "CALC_PRESSION_1.skin_3d",
+          {{"cell", mesh.cellName(c)}, {"type", name(mesh.cellType(c))}, {"dimension", mesh.dimension()}},
+          kw.locationOf("GROUP_MA"));
     }
   }
   return cells;
@@ -73,9 +72,7 @@ std::vector<Point3> coordinates(const Mesh& mesh, const ResultStep& step, bool d
   }
   const Field* depl = step.field("DEPL");
   if (depl == nullptr || depl->support() != FieldSupport::Node) {
-    throw error(fmt::format("result {} has no DEPL at NUME_ORDRE {}, which GEOMETRIE='DEFORMEE' needs", name,
-                            step.number),
-                kw.locationOf("GEOMETRIE"), "use GEOMETRIE='INITIALE'");
+    throw error("CALC_PRESSION_1.2", {{"name", name}, {"number", step.number}}, kw.locationOf("GEOMETRIE"));
   }
   for (int d = 0; d < 3; ++d) {
     const auto i = depl->componentIndex(Model::componentName(d));
@@ -114,13 +111,11 @@ Value runCalcPression(OperatorCall& call) {
   STELLA_ASSERT(result != nullptr, "RESULTAT holds no result");
   auto model = std::dynamic_pointer_cast<Model>(result->model);
   if (!model) {
-    throw error(fmt::format("result {} carries no model", concept_->name), kw.locationOf("RESULTAT"),
-                "give a result of MECA_STATIQUE or STAT_NON_LINE");
+    throw error("CALC_PRESSION_1.3", {{"name", concept_->name}}, kw.locationOf("RESULTAT"));
   }
   const Mesh& mesh = *meshConceptOf(kw)->mesh;
   if (mesh.nodeCount() != model->mesh->nodeCount() || mesh.cellCount() != model->mesh->cellCount()) {
-    throw error(fmt::format("MAILLAGE is not the mesh of result {}", concept_->name),
-                kw.locationOf("MAILLAGE"), "give the mesh the result was computed on");
+    throw error("CALC_PRESSION_1.4", {{"name", concept_->name}}, kw.locationOf("MAILLAGE"));
   }
   const auto skin = skinCells(mesh, kw);
   const bool deformed = kw.text("GEOMETRIE") == "DEFORMEE";
@@ -129,10 +124,8 @@ Value runCalcPression(OperatorCall& call) {
   for (ResultStep* step : steps) {
     const Field* sief = step->field("SIEF_ELGA");
     if (sief == nullptr) {
-      throw error(fmt::format("result {} has no SIEF_ELGA at NUME_ORDRE {}: the pressure is computed from it",
-                              concept_->name, step->number),
-                  kw.locationOf("RESULTAT"),
-                  "compute the stresses (MECA_STATIQUE and STAT_NON_LINE store them)");
+      throw error("CALC_PRESSION_1.5", {{"name", concept_->name}, {"number", step->number}},
+                  kw.locationOf("RESULTAT"));
     }
     const Field sigma = averageAtNodes(mesh, extrapolateToCellNodes(*model, *sief, volumes));
     const auto x = coordinates(mesh, *step, deformed, concept_->name, kw);

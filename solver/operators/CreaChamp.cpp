@@ -6,6 +6,7 @@
 // steps (TYPE_MAXI) are refused by name as not implemented yet.
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/inputs/FieldSelection.hpp"
 #include "solver/post/FieldConcept.hpp"
@@ -20,9 +21,7 @@ namespace {
 
 [[noreturn]] void notImplemented(const KeywordTree& kw, const std::string& keyword, const std::string& what,
                                  const std::string& note) {
-  throw UserError(Diagnostic::fatal("CREA_1", fmt::format("CREA_CHAMP {} is not implemented yet", what),
-                                    kw.locationOf(keyword))
-                      .withNote(note));
+  throw UserError(msg::make("CREA_1", {{"what", what}}, kw.locationOf(keyword)).withNote(note));
 }
 
 void refuseUnsupported(const KeywordTree& kw) {
@@ -30,13 +29,12 @@ void refuseUnsupported(const KeywordTree& kw) {
   // INTERPOL='LIN' are refused by the catalogue (implemente=, non_implemente=).
   for (const char* k : {"MAILLAGE", "TABLE", "CARA_ELEM", "CHARGE", "CHAM_MATER"}) {
     if (kw.has(k) && !kw.has("RESULTAT")) {
-      notImplemented(kw, k, fmt::format("OPERATION='EXTR' from {}", k),
-                     "extract a field of a result with RESULTAT=..., NOM_CHAM=...");
+      notImplemented(kw, k, msg::text("CREA_1.f1", {{"k", k}}), msg::text("CREA_1.f3"));
     }
   }
   if (kw.text("TYPE_CHAM").rfind("CART_", 0) == 0) {
-    notImplemented(kw, "TYPE_CHAM", fmt::format("TYPE_CHAM='{}' (a carte)", kw.text("TYPE_CHAM")),
-                   "extract the field as a cham_elem (ELEM_, ELGA_ or ELNO_ types)");
+    notImplemented(kw, "TYPE_CHAM", msg::text("CREA_1.f2", {{"text", kw.text("TYPE_CHAM")}}),
+                   msg::text("CREA_1.f4"));
   }
 }
 
@@ -48,16 +46,11 @@ void checkType(const KeywordTree& kw, const Field& field, const std::string& fie
     return;
   }
   const bool sameSupport = asked.substr(0, 4) == actual.substr(0, 4);
-  throw UserError(
-      Diagnostic::fatal("CREA_2",
-                        fmt::format("TYPE_CHAM='{}' does not match the field {}, which is of type {}", asked,
-                                    fieldName, actual),
-                        kw.locationOf("TYPE_CHAM"))
-          .withNote(sameSupport
-                        ? fmt::format("give TYPE_CHAM='{}'", actual)
-                        : fmt::format("give TYPE_CHAM='{}', or compute a field on the support {} with "
-                                      "CALC_CHAMP (e.g. SIEF_NOEU, SIEF_ELNO) and extract that one",
-                                      actual, asked.substr(0, 4))));
+  throw UserError(msg::make("CREA_2", {{"asked", asked}, {"field_name", fieldName}, {"actual", actual}},
+                            kw.locationOf("TYPE_CHAM"))
+                      .withNote(sameSupport ? msg::text("CREA_2.n1", {{"actual", actual}})
+                                            : msg::text("CREA_2.n2", {{"actual", actual},
+                                                                      {"substr", asked.substr(0, 4)}})));
 }
 
 Value runCreaChamp(OperatorCall& call) {

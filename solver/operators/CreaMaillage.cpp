@@ -2,6 +2,7 @@
 // PENTA15_18, MODI_MAILLE (QUAD8_9, TRIA6_7, SEG3_4), CREA_POI1, RESTREINT, DECOUPE_LAC (the
 // patches of LAC contact, solver/mesh/LacCutting.hpp). Others are refused as not implemented yet.
 
+#include "messages/Messages.hpp"
 #include "solver/mesh/GroupOperations.hpp"
 #include "solver/mesh/LacCutting.hpp"
 #include "solver/mesh/MeshConversion.hpp"
@@ -53,9 +54,7 @@ Mesh apply(const Mesh& mesh, const KeywordTree& kw, std::ostream& message) {
                                : option == "SEG3_4"  ? CellConversion::Seg3To4
                                                      : CellConversion::LineToQuad;
       if (option == "QUAD_TRIA3") {
-        throw UserError(Diagnostic::fatal("CREA_MAILLAGE_1",
-                                          "MODI_MAILLE OPTION='QUAD_TRIA3' is not implemented yet",
-                                          occ.locationOf("OPTION")));
+        throw UserError(msg::make("CREA_MAILLAGE_1", {}, occ.locationOf("OPTION")));
       }
       out = convertCells(out, c, selection(out, occ));
     }
@@ -107,11 +106,10 @@ Mesh apply(const Mesh& mesh, const KeywordTree& kw, std::ostream& message) {
   }
   for (const auto& k : kw.factors()) {
     if (!k.occurrences.empty()) {
-      throw UserError(Diagnostic::fatal("CREA_MAILLAGE_1",
-                                        "CREA_MAILLAGE/" + k.name + " is not implemented yet", k.location));
+      throw UserError(msg::make("CREA_MAILLAGE_1.2", {{"name", k.name}}, k.location));
     }
   }
-  throw UserError(Diagnostic::fatal("CREA_MAILLAGE_1", "CREA_MAILLAGE: no operation given", kw.location()));
+  throw UserError(msg::make("CREA_MAILLAGE_1.3", {}, kw.location()));
 }
 
 Value runCreaMaillage(OperatorCall& call) {

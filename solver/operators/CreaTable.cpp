@@ -1,6 +1,7 @@
 // CREA_TABLE: a table from lists of values (LISTE=_F(PARA=..., LISTE_R/LISTE_I/LISTE_K=...)).
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/post/Table.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 
@@ -11,9 +12,7 @@ namespace {
 Value runCreaTable(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
   if (kw.has("FONCTION")) {
-    throw UserError(
-        Diagnostic::fatal("TABLE_4", "CREA_TABLE/FONCTION is not implemented yet", kw.locationOf("FONCTION"))
-            .withNote("build the table with LISTE=_F(PARA=..., LISTE_R=...)"));
+    throw UserError(msg::make("TABLE_4", {}, kw.locationOf("FONCTION")));
   }
   auto table = std::make_shared<Table>();
   table->title = kw.textOr("TITRE", "");
@@ -29,17 +28,16 @@ Value runCreaTable(OperatorCall& call) {
     ValueList cells = values->values;
     if (const SimpleKeyword* lines = column.simple("NUME_LIGN")) {
       if (lines->values.size() != cells.size()) {
-        throw UserError(Diagnostic::fatal("TABLE_5",
-                                          "NUME_LIGN gives " + std::to_string(lines->values.size()) +
-                                              " line numbers for " + std::to_string(cells.size()) + " values",
-                                          column.locationOf("NUME_LIGN")));
+        throw UserError(msg::make("TABLE_5",
+                                  {{"values_count", std::to_string(lines->values.size())},
+                                   {"cells_count", std::to_string(cells.size())}},
+                                  column.locationOf("NUME_LIGN")));
       }
       ValueList placed;
       for (std::size_t i = 0; i < cells.size(); ++i) {
         std::int64_t line = lines->values[i].asInt();
         if (line < 1) {
-          throw UserError(
-              Diagnostic::fatal("TABLE_5", "NUME_LIGN numbers start at 1", column.locationOf("NUME_LIGN")));
+          throw UserError(msg::make("TABLE_5.2", {}, column.locationOf("NUME_LIGN")));
         }
         if (placed.size() < static_cast<std::size_t>(line)) {
           placed.resize(static_cast<std::size_t>(line));

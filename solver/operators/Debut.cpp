@@ -4,6 +4,7 @@
 // a try/except catches), is not stella's behaviour and gets an alarm saying so.
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 #include "solver/session/Session.hpp"
 
@@ -14,13 +15,7 @@ namespace {
 void warnErrorsAreNotExceptions(OperatorCall& call) {
   for (const KeywordTree& occ : call.keywords.occurrences("ERREUR")) {
     if (occ.textOr("ERREUR_F", "ABORT") == "EXCEPTION") {
-      call.session.report(
-          Diagnostic::alarm("DEBUT_1",
-                            "ERREUR_F='EXCEPTION' is not implemented yet: an error of a command stops the "
-                            "study, an 'except' does not catch it",
-                            occ.locationOf("ERREUR_F"))
-              .withNote("errors of the command language (KeyError, ZeroDivisionError...) are caught as in "
-                        "Python; see doc/language.md, \"Errors and try/except\""));
+      call.session.report(msg::make("DEBUT_1", {}, occ.locationOf("ERREUR_F")));
     }
   }
 }

@@ -2,6 +2,7 @@
 // (solver/contact/ContactDefinition) and checks them against the model's mesh.
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/contact/ContactDefinition.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/inputs/ContactReader.hpp"
@@ -28,15 +29,7 @@ void checkNodesCarryDofs(const contact::ContactDefinition& def, const Model& mod
       for (NodeId n : mesh.nodesOfCells(*cells)) {
         if (!model.nodeActive(n)) {
           throw UserError(
-              Diagnostic::fatal(
-                  "CONTACT_6",
-                  fmt::format("node {} of contact group '{}' carries no displacement DOF in the "
-                              "model",
-                              mesh.nodeName(n), group),
-                  zone.location)
-                  .withNote(
-                      "assign elements to the contact surface in AFFE_MODELE (a rigid surface: its skin "
-                      "with all its DOFs imposed, notice §4.6)"));
+              msg::make("CONTACT_6.2", {{"node_name", mesh.nodeName(n)}, {"group", group}}, zone.location));
         }
       }
     }

@@ -2,6 +2,7 @@
 // VALE_PARA/VALE_FONC lists), with INTERPOL and PROL_GAUCHE/PROL_DROITE.
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/functions/RealFunction.hpp"
 #include "solver/session/OperatorRegistry.hpp"
@@ -29,10 +30,7 @@ void readPoints(const KeywordTree& kw, std::vector<double>& x, std::vector<doubl
   if (kw.has("VALE")) {
     std::vector<double> pairs = kw.reals("VALE");
     if (pairs.size() % 2 != 0) {
-      throw UserError(Diagnostic::fatal(
-          "FUNCTION_2",
-          fmt::format("VALE holds {} numbers; it needs pairs (x1, y1, x2, y2, ...)", pairs.size()),
-          kw.locationOf("VALE")));
+      throw UserError(msg::make("FUNCTION_2", {{"pairs_count", pairs.size()}}, kw.locationOf("VALE")));
     }
     for (std::size_t i = 0; i < pairs.size(); i += 2) {
       x.push_back(pairs[i]);
@@ -46,12 +44,10 @@ void readPoints(const KeywordTree& kw, std::vector<double>& x, std::vector<doubl
     y = listValues(kw, "VALE_FONC");
   } else {
     const std::string which = kw.has("VALE_C") ? "VALE_C" : "NOEUD_PARA";
-    throw UserError(Diagnostic::fatal("FUNCTION_3", "DEFI_FONCTION/" + which + " is not implemented yet",
-                                      kw.locationOf(which)));
+    throw UserError(msg::make("FUNCTION_3", {{"which", which}}, kw.locationOf(which)));
   }
   if (x.size() != y.size()) {
-    throw UserError(Diagnostic::fatal(
-        "FUNCTION_2", fmt::format("{} abscissas for {} ordinates", x.size(), y.size()), kw.location()));
+    throw UserError(msg::make("FUNCTION_2.2", {{"x_count", x.size()}, {"y_count", y.size()}}, kw.location()));
   }
 }
 
@@ -61,11 +57,7 @@ void orderAbscissas(const KeywordTree& kw, std::vector<double>& x, std::vector<d
     for (std::size_t i = 1; i < x.size(); ++i) {
       if (!(x[i] > x[i - 1])) {
         throw UserError(
-            Diagnostic::fatal("FUNCTION_4",
-                              fmt::format("the abscissas must increase strictly: x[{}] = {} follows {}",
-                                          i + 1, x[i], x[i - 1]),
-                              kw.location())
-                .withNote("sort the points, or give VERIF='NON' to have them sorted"));
+            msg::make("FUNCTION_4", {{"i", i + 1}, {"x", x[i]}, {"x_2", x[i - 1]}}, kw.location()));
       }
     }
     return;
@@ -99,8 +91,7 @@ Value runDefiFonction(OperatorCall& call) {
     return std::all_of(v.begin(), v.end(), [](double t) { return t > 0; });
   };
   if ((logX && !positive(x)) || (logY && !positive(y))) {
-    throw UserError(
-        Diagnostic::fatal("FUNCTION_5", "INTERPOL='LOG' needs positive values", kw.locationOf("INTERPOL")));
+    throw UserError(msg::make("FUNCTION_5", {}, kw.locationOf("INTERPOL")));
   }
   auto f = std::make_shared<TabulatedFunction>(kw.text("NOM_PARA"), std::move(x), std::move(y));
   f->logX = logX;

@@ -4,6 +4,7 @@
 // implemented yet.
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/database/MeshConcept.hpp"
 #include "solver/database/Result.hpp"
@@ -22,13 +23,8 @@ namespace stella {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& id, const std::string& message, const SourceLocation& at,
-                       const std::string& note = "") {
-  Diagnostic d = Diagnostic::fatal(id, message, at);
-  if (!note.empty()) {
-    d.withNote(note);
-  }
-  throw UserError(d);
+[[noreturn]] void fail(std::string_view key, msg::Args args, const SourceLocation& at) {
+  throw UserError(msg::make(key, args, at));
 }
 
 std::string groupList(const std::map<std::string, std::vector<std::int32_t>>& groups) {
@@ -45,8 +41,7 @@ std::string groupList(const std::map<std::string, std::vector<std::int32_t>>& gr
 std::vector<CellId> cellGroup(const Mesh& m, const std::string& g, const SourceLocation& at) {
   const auto* v = m.cellGroup(g);
   if (v == nullptr) {
-    fail("DEFI_GROUP_1", "the mesh has no group of cells '" + g + "'", at,
-         "groups of cells: " + groupList(m.cellGroups()));
+    fail("DEFI_GROUP_1", {{"g", g}, {"group_list", groupList(m.cellGroups())}}, at);
   }
   return *v;
 }
@@ -54,8 +49,7 @@ std::vector<CellId> cellGroup(const Mesh& m, const std::string& g, const SourceL
 std::vector<NodeId> nodeGroup(const Mesh& m, const std::string& g, const SourceLocation& at) {
   const auto* v = m.nodeGroup(g);
   if (v == nullptr) {
-    fail("DEFI_GROUP_1", "the mesh has no group of nodes '" + g + "'", at,
-         "groups of nodes: " + groupList(m.nodeGroups()));
+    fail("DEFI_GROUP_1.2", {{"g", g}, {"group_list", groupList(m.nodeGroups())}}, at);
   }
   return *v;
 }
@@ -91,18 +85,18 @@ Point3 centreOf(const Mesh& m, const KeywordTree& occ) {
     const auto name = occ.text("NOEUD_CENTRE");
     const auto id = m.findNode(name);
     if (!id) {
-      fail("DEFI_GROUP_2", "the mesh has no node named '" + name + "'", occ.locationOf("NOEUD_CENTRE"));
+      fail("DEFI_GROUP_2", {{"name", name}}, occ.locationOf("NOEUD_CENTRE"));
     }
     return m.point(*id);
   }
   if (occ.has("GROUP_NO_CENTRE")) {
     const auto nodes = nodeGroup(m, occ.text("GROUP_NO_CENTRE"), occ.locationOf("GROUP_NO_CENTRE"));
     if (nodes.size() != 1) {
-      fail("DEFI_GROUP_3", "GROUP_NO_CENTRE must hold exactly one node", occ.locationOf("GROUP_NO_CENTRE"));
+      fail("DEFI_GROUP_3", {}, occ.locationOf("GROUP_NO_CENTRE"));
     }
     return m.point(nodes.front());
   }
-  fail("DEFI_GROUP_3", "give POINT, NOEUD_CENTRE or GROUP_NO_CENTRE", occ.location());
+  fail("DEFI_GROUP_3.2", {}, occ.location());
 }
 
 Point3 directionOf(const KeywordTree& occ) {
@@ -169,8 +163,7 @@ std::vector<CellId> optionCells(const Mesh& m, const KeywordTree& occ) {
   if (option == "SPHERE" || option == "CYLINDRE" || option == "BANDE") { // the options with CRIT_NOEUD
     return cellsAround(m, occ, option, centre);
   }
-  fail("DEFI_GROUP_4", "CREA_GROUP_MA OPTION='" + option + "' is not implemented yet",
-       occ.locationOf("OPTION"));
+  fail("DEFI_GROUP_4", {{"option", option}}, occ.locationOf("OPTION"));
 }
 
 std::vector<CellId> creaGroupMaCells(const Mesh& m, const KeywordTree& occ) {
@@ -183,7 +176,7 @@ std::vector<CellId> creaGroupMaCells(const Mesh& m, const KeywordTree& occ) {
     for (const auto& n : occ.texts("MAILLE")) {
       const auto c = m.findCell(n);
       if (!c) {
-        fail("DEFI_GROUP_2", "the mesh has no cell named '" + n + "'", occ.locationOf("MAILLE"));
+        fail("DEFI_GROUP_2.2", {{"n", n}}, occ.locationOf("MAILLE"));
       }
       cells.push_back(*c);
     }
@@ -205,16 +198,13 @@ std::vector<std::optional<double>> nodalValues(const Mesh& m, const KeywordTree&
   const std::string cmp = occ.text("NOM_CMP");
   std::vector<std::optional<double>> v(static_cast<std::size_t>(m.nodeCount()));
   if (occ.has("CHAM_GD")) {
-    fail("DEFI_GROUP_4", "INTERVALLE_VALE with CHAM_GD is not implemented yet", occ.locationOf("CHAM_GD"),
-         "give RESULTAT= (with NOM_CHAM, NUME_ORDRE or INST), or NOM_CMP X, Y or Z for the coordinates");
+    fail("DEFI_GROUP_4.2", {}, occ.locationOf("CHAM_GD"));
   }
   if (!occ.has("RESULTAT")) {
     const std::map<std::string, std::size_t> axes{{"X", 0}, {"Y", 1}, {"Z", 2}};
     const auto it = axes.find(cmp);
     if (it == axes.end()) {
-      fail("DEFI_GROUP_9",
-           "INTERVALLE_VALE without RESULTAT reads the coordinates: NOM_CMP must be X, Y or Z",
-           occ.locationOf("NOM_CMP"));
+      fail("DEFI_GROUP_9", {}, occ.locationOf("NOM_CMP"));
     }
     for (NodeId n = 0; n < m.nodeCount(); ++n) {
       v[static_cast<std::size_t>(n)] = m.point(n)[it->second];
@@ -228,9 +218,7 @@ std::vector<std::optional<double>> nodalValues(const Mesh& m, const KeywordTree&
   const std::string name = occ.text("NOM_CHAM");
   const Field* f = step->field(name);
   if (f == nullptr || f->support() != FieldSupport::Node) {
-    fail("DEFI_GROUP_9",
-         fmt::format("the result {} has no nodal field {} at NUME_ORDRE {}", c->name, name, step->number),
-         occ.location());
+    fail("DEFI_GROUP_9.2", {{"name", c->name}, {"name_2", name}, {"number", step->number}}, occ.location());
   }
   const auto k = f->componentIndex(cmp);
   if (!k) {
@@ -238,8 +226,7 @@ std::vector<std::optional<double>> nodalValues(const Mesh& m, const KeywordTree&
     for (const auto& x : f->components()) {
       known += (known.empty() ? "" : ", ") + x;
     }
-    fail("DEFI_GROUP_9", "the field " + name + " has no component " + cmp, occ.locationOf("NOM_CMP"),
-         "components: " + known);
+    fail("DEFI_GROUP_9.3", {{"name", name}, {"cmp", cmp}, {"known", known}}, occ.locationOf("NOM_CMP"));
   }
   for (std::size_t n = 0; n < v.size() && n < f->entityCount(); ++n) {
     if (!f->partial() || f->defined(n, *k)) {
@@ -257,15 +244,14 @@ std::vector<std::optional<double>> nodalValues(const Mesh& m, const KeywordTree&
 // no gap).
 std::vector<NodeId> tunnelNodes(const Mesh& m, const KeywordTree& occ) {
   if (!occ.has("GROUP_MA_AXE") || !occ.has("GROUP_NO_ORIG")) {
-    fail("DEFI_GROUP_3", "OPTION='TUNNEL' needs GROUP_MA_AXE and GROUP_NO_ORIG", occ.location());
+    fail("DEFI_GROUP_3.3", {}, occ.location());
   }
   if (occ.has("MAILLE")) {
-    fail("DEFI_GROUP_4", "TUNNEL with MAILLE is not implemented yet: give GROUP_MA or TOUT",
-         occ.locationOf("MAILLE"));
+    fail("DEFI_GROUP_4.3", {}, occ.locationOf("MAILLE"));
   }
   const auto origin = nodeGroup(m, occ.text("GROUP_NO_ORIG"), occ.locationOf("GROUP_NO_ORIG"));
   if (origin.size() != 1) {
-    fail("DEFI_GROUP_3", "GROUP_NO_ORIG must hold exactly one node", occ.locationOf("GROUP_NO_ORIG"));
+    fail("DEFI_GROUP_3.4", {}, occ.locationOf("GROUP_NO_ORIG"));
   }
   const auto axis =
       orderedChainNodes(m, unionOf(cellGroups(m, occ, "GROUP_MA_AXE")), origin.front(), std::nullopt);
@@ -335,7 +321,7 @@ void creaGroupNo(Mesh& m, const KeywordTree& occ, std::vector<std::string>& made
       const auto groups = occ.texts("GROUP_MA");
       const auto names = occ.has("NOM") ? occ.texts("NOM") : groups;
       if (names.size() != groups.size()) {
-        fail("DEFI_GROUP_3", "NOM must give one name per group of GROUP_MA", occ.locationOf("NOM"));
+        fail("DEFI_GROUP_3.5", {}, occ.locationOf("NOM"));
       }
       for (std::size_t i = 0; i < groups.size(); ++i) {
         setGroup(names[i],
@@ -351,7 +337,7 @@ void creaGroupNo(Mesh& m, const KeywordTree& occ, std::vector<std::string>& made
       for (const auto& n : occ.texts("NOEUD")) {
         const auto id = m.findNode(n);
         if (!id) {
-          fail("DEFI_GROUP_2", "the mesh has no node named '" + n + "'", occ.locationOf("NOEUD"));
+          fail("DEFI_GROUP_2.3", {{"n", n}}, occ.locationOf("NOEUD"));
         }
         nodes.push_back(*id);
       }
@@ -400,7 +386,7 @@ void creaGroupNo(Mesh& m, const KeywordTree& occ, std::vector<std::string>& made
       }
       const auto nodes = nodeGroup(m, occ.text(kw), occ.locationOf(kw));
       if (nodes.size() != 1) {
-        fail("DEFI_GROUP_3", std::string(kw) + " must hold exactly one node", occ.locationOf(kw));
+        fail("DEFI_GROUP_3.6", {{"kw", std::string(kw)}}, occ.locationOf(kw));
       }
       return nodes.front();
     };
@@ -409,7 +395,7 @@ void creaGroupNo(Mesh& m, const KeywordTree& occ, std::vector<std::string>& made
     const auto a = nodeGroup(m, occ.text("GROUP_NO_ORIG"), occ.locationOf("GROUP_NO_ORIG"));
     const auto b = nodeGroup(m, occ.text("GROUP_NO_EXTR"), occ.locationOf("GROUP_NO_EXTR"));
     if (a.size() != 1 || b.size() != 1) {
-      fail("DEFI_GROUP_3", "GROUP_NO_ORIG and GROUP_NO_EXTR must hold exactly one node each", occ.location());
+      fail("DEFI_GROUP_3.7", {}, occ.location());
     }
     std::vector<NodeId> candidates;
     if (occ.has("GROUP_NO")) {
@@ -435,15 +421,14 @@ void creaGroupNo(Mesh& m, const KeywordTree& occ, std::vector<std::string>& made
   } else if (option == "TUNNEL") {
     setGroup(name, tunnelNodes(m, occ), false);
   } else {
-    fail("DEFI_GROUP_4", "CREA_GROUP_NO OPTION='" + option + "' is not implemented yet",
-         occ.locationOf("OPTION"));
+    fail("DEFI_GROUP_4.4", {{"option", option}}, occ.locationOf("OPTION"));
   }
 }
 
 Value runDefiGroup(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
   if (!kw.has("MAILLAGE")) {
-    fail("DEFI_GROUP_4", "DEFI_GROUP on a GRILLE is not implemented yet", call.location);
+    fail("DEFI_GROUP_4.5", {}, call.location);
   }
   auto data = conceptData<MeshConcept>(kw.conceptValue("MAILLAGE"));
   STELLA_ASSERT(data != nullptr && data->mesh != nullptr, "MAILLAGE holds no mesh");
@@ -452,29 +437,25 @@ Value runDefiGroup(OperatorCall& call) {
   for (const auto& occ : kw.occurrences("DETR_GROUP_MA")) {
     for (const auto& g : occ.texts("NOM")) {
       if (!m.removeCellGroup(g) && alarm) {
-        call.session.report(Diagnostic::alarm("DEFI_GROUP_6", "DETR_GROUP_MA: no group of cells '" + g + "'",
-                                              occ.locationOf("NOM")));
+        call.session.report(msg::make("DEFI_GROUP_6", {{"g", g}}, occ.locationOf("NOM")));
       }
     }
   }
   for (const auto& occ : kw.occurrences("DETR_GROUP_NO")) {
     for (const auto& g : occ.texts("NOM")) {
       if (!m.removeNodeGroup(g) && alarm) {
-        call.session.report(Diagnostic::alarm("DEFI_GROUP_6", "DETR_GROUP_NO: no group of nodes '" + g + "'",
-                                              occ.locationOf("NOM")));
+        call.session.report(msg::make("DEFI_GROUP_6.2", {{"g", g}}, occ.locationOf("NOM")));
       }
     }
   }
   for (const auto& occ : kw.occurrences("CREA_GROUP_MA")) {
     const std::string name = occ.text("NOM");
     if (m.hasCellGroup(name)) {
-      fail("DEFI_GROUP_7", "a group of cells '" + name + "' already exists", occ.locationOf("NOM"),
-           "destroy it first with DETR_GROUP_MA or choose another name");
+      fail("DEFI_GROUP_7", {{"name", name}}, occ.locationOf("NOM"));
     }
     auto cells = creaGroupMaCells(m, occ);
     if (cells.empty() && alarm) {
-      call.session.report(
-          Diagnostic::alarm("DEFI_GROUP_8", "the group of cells '" + name + "' is empty", occ.location()));
+      call.session.report(msg::make("DEFI_GROUP_8", {{"name", name}}, occ.location()));
     }
     call.session.message() << fmt::format("   DEFI_GROUP: group of cells {} ({} cells)\n", name,
                                           cells.size());
@@ -486,8 +467,7 @@ Value runDefiGroup(OperatorCall& call) {
     for (const auto& g : made) {
       const std::size_t n = m.nodeGroup(g)->size();
       if (n == 0 && alarm) {
-        call.session.report(
-            Diagnostic::alarm("DEFI_GROUP_8", "the group of nodes '" + g + "' is empty", occ.location()));
+        call.session.report(msg::make("DEFI_GROUP_8.2", {{"g", g}}, occ.location()));
       }
       call.session.message() << fmt::format("   DEFI_GROUP: group of nodes {} ({} nodes)\n", g, n);
     }

@@ -3,6 +3,7 @@
 // INTERPENETRATION with ADAPT_COEF_PENA (PENE_MAXI, COEF_MAXI) or ARRET.
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/functions/InstantList.hpp"
 #include "solver/functions/RealFunction.hpp"
@@ -74,10 +75,9 @@ Value runDefiListInst(OperatorCall& call) {
   }
   for (std::size_t i = 1; i < list->instants.size(); ++i) {
     if (!(list->instants[i] > list->instants[i - 1])) {
-      throw UserError(Diagnostic::fatal("LIST_INST_2",
-                                        fmt::format("the instants must increase strictly: {} follows {}",
-                                                    list->instants[i], list->instants[i - 1]),
-                                        def.locationOf(def.has("VALE") ? "VALE" : "LIST_INST")));
+      throw UserError(msg::make("LIST_INST_2",
+                                {{"instants", list->instants[i]}, {"instants_2", list->instants[i - 1]}},
+                                def.locationOf(def.has("VALE") ? "VALE" : "LIST_INST")));
     }
   }
   for (const KeywordTree& e : kw.occurrences("ECHEC")) {

@@ -2,6 +2,7 @@
 // (INTERVALLE=_F(JUSQU_A=..., NOMBRE=... or PAS=...)).
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/functions/RealFunction.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 
@@ -16,8 +17,7 @@ void appendInterval(const KeywordTree& interval, std::vector<double>& values) {
   double from = values.back();
   double to = interval.real("JUSQU_A");
   if (!(to > from)) {
-    throw UserError(Diagnostic::fatal("LIST_1", fmt::format("JUSQU_A = {} does not follow {}", to, from),
-                                      interval.locationOf("JUSQU_A")));
+    throw UserError(msg::make("LIST_1", {{"to", to}, {"from", from}}, interval.locationOf("JUSQU_A")));
   }
   std::int64_t count = 0;
   if (interval.has("NOMBRE")) {
@@ -28,16 +28,11 @@ void appendInterval(const KeywordTree& interval, std::vector<double>& values) {
     count = std::llround(n);
     if (step <= 0 || count < 1 || std::fabs(n - static_cast<double>(count)) > 1.0e-6 * std::max(1.0, n)) {
       throw UserError(
-          Diagnostic::fatal("LIST_2",
-                            fmt::format("PAS = {} does not divide the interval [{}, {}] into a whole "
-                                        "number of steps",
-                                        step, from, to),
-                            interval.locationOf("PAS"))
-              .withNote("use NOMBRE, or a step that divides the interval"));
+          msg::make("LIST_2", {{"step", step}, {"from", from}, {"to", to}}, interval.locationOf("PAS")));
     }
   }
   if (count < 1) {
-    throw UserError(Diagnostic::fatal("LIST_3", "NOMBRE must be at least 1", interval.locationOf("NOMBRE")));
+    throw UserError(msg::make("LIST_3", {}, interval.locationOf("NOMBRE")));
   }
   for (std::int64_t i = 1; i <= count; ++i) {
     values.push_back(i == count ? to
@@ -52,13 +47,9 @@ Value runDefiListReel(OperatorCall& call) {
     values = kw.reals("VALE");
     for (std::size_t i = 1; i < values.size(); ++i) {
       if (!(values[i] > values[i - 1])) { // also refuses nan
-        throw UserError(Diagnostic::fatal("LIST_4",
-                                          fmt::format("VALE must increase strictly: value {} ({}) follows "
-                                                      "value {} ({})",
-                                                      i + 1, values[i], i, values[i - 1]),
-                                          kw.locationOf("VALE"))
-                            .withNote("code_aster refuses a list of reals that does not increase; sort the "
-                                      "values and remove the repeated ones"));
+        throw UserError(msg::make(
+            "LIST_4", {{"i", i + 1}, {"values", values[i]}, {"i_2", i}, {"values_2", values[i - 1]}},
+            kw.locationOf("VALE")));
       }
     }
   } else {

@@ -2,6 +2,7 @@
 // are refused as not implemented yet.
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/model/Material.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 
@@ -14,9 +15,7 @@ namespace {
 
 void refuse(const KeywordTree& kw, const std::string& name) {
   if (kw.has(name)) {
-    throw UserError(Diagnostic::fatal("MATER_1", fmt::format("DEFI_MATERIAU {} is not implemented yet", name),
-                                      kw.locationOf(name))
-                        .withNote("available: ELAS (E, NU, RHO, ALPHA) and ECRO_LINE (D_SIGM_EPSI, SY)"));
+    throw UserError(msg::make("MATER_1", {{"name", name}}, kw.locationOf(name)));
   }
 }
 
@@ -26,9 +25,7 @@ double finiteReal(const KeywordTree& kw, const std::string& factor, const std::s
   const double value = kw.real(name);
   if (!std::isfinite(value)) {
     throw UserError(
-        Diagnostic::fatal("MATER_4", fmt::format("{} {} = {} is not a finite number", factor, name, value),
-                          kw.locationOf(name))
-            .withNote("give a finite value (a literal above about 1.8e308 such as 1e400 is inf)"));
+        msg::make("MATER_4.2", {{"factor", factor}, {"name", name}, {"value", value}}, kw.locationOf(name)));
   }
   return value;
 }
@@ -36,10 +33,8 @@ double finiteReal(const KeywordTree& kw, const std::string& factor, const std::s
 void refuseOutside(const KeywordTree& kw, const std::string& name, double value, bool valid,
                    const std::string& expected) {
   if (!valid) {
-    throw UserError(Diagnostic::fatal("MATER_2",
-                                      fmt::format("ELAS {} = {}: {} is expected", name, value, expected),
-                                      kw.locationOf(name))
-                        .withNote("check the value and its unit"));
+    throw UserError(msg::make("MATER_2", {{"name", name}, {"value", value}, {"expected", expected}},
+                              kw.locationOf(name)));
   }
 }
 
@@ -71,10 +66,7 @@ Value runDefiMateriau(OperatorCall& call) {
   if (kw.has("ELAS")) {
     const KeywordTree& elas = kw.occurrences("ELAS").front();
     if (!elas.has("E")) {
-      throw UserError(Diagnostic::fatal("MATER_1",
-                                        "ELAS with K and MU or CELE_P and CELE_S is not implemented yet",
-                                        elas.location())
-                          .withNote("give E and NU"));
+      throw UserError(msg::make("MATER_1.2", {}, elas.location()));
     }
     material->elastic = readElastic(elas);
   }
@@ -84,12 +76,9 @@ Value runDefiMateriau(OperatorCall& call) {
                               finiteReal(ecro, "ECRO_LINE", "SY")};
     if (h.yieldStress <= 0.0 || h.tangentModulus < 0.0 ||
         (material->elastic && h.tangentModulus >= material->elastic->youngModulus)) {
-      throw UserError(
-          Diagnostic::fatal("MATER_3",
-                            fmt::format("ECRO_LINE needs SY > 0 and 0 <= D_SIGM_EPSI < E (got SY = {}, "
-                                        "D_SIGM_EPSI = {})",
-                                        h.yieldStress, h.tangentModulus),
-                            ecro.location()));
+      throw UserError(msg::make("MATER_3",
+                                {{"yield_stress", h.yieldStress}, {"tangent_modulus", h.tangentModulus}},
+                                ecro.location()));
     }
     material->hardening = h;
   }

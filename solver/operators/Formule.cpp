@@ -2,6 +2,7 @@
 // (FORMULE(VALE='p0*INST', NOM_PARA='INST', p0=p0)); extra keywords bind numeric constants.
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/functions/RealFunction.hpp"
 #include "solver/session/OperatorRegistry.hpp"
 
@@ -40,8 +41,7 @@ SourceLocation valueAfter(const SourceLocation& keyword, const std::string& name
 Value runFormule(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
   if (kw.has("VALE_C")) {
-    throw UserError(Diagnostic::fatal(
-        "FUNCTION_3", "FORMULE/VALE_C (complex formulas) is not implemented yet", kw.locationOf("VALE_C")));
+    throw UserError(msg::make("FUNCTION_3.2", {}, kw.locationOf("VALE_C")));
   }
   std::vector<std::pair<std::string, double>> constants;
   for (const SimpleKeyword& k : kw.simples()) {
@@ -49,11 +49,7 @@ Value runFormule(OperatorCall& call) {
       continue;
     }
     if (k.values.size() != 1 || !k.values.front().isNumber()) {
-      throw UserError(Diagnostic::fatal("FUNCTION_6",
-                                        "FORMULE: the constant " + k.name +
-                                            " must be a number; other kinds of "
-                                            "constants are not implemented yet",
-                                        k.location));
+      throw UserError(msg::make("FUNCTION_6", {{"name", k.name}}, k.location));
     }
     constants.emplace_back(k.name, k.values.front().asReal());
   }

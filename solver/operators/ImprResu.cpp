@@ -7,6 +7,7 @@
 // and NOM_CMP selections; GROUP_NO / GROUP_MA restrict the rows of FORMAT='RESULTAT'. Gauss points get the
 // coordinates of the code_aster RIGI family.
 
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/fem/Quadrature.hpp"
@@ -33,8 +34,7 @@ std::vector<int> selectedSteps(const Result& r, const KeywordTree& occ) {
   if (occ.has("NUME_ORDRE")) {
     for (const auto n : occ.integers("NUME_ORDRE")) {
       if (r.stepNumber(static_cast<int>(n)) == nullptr) {
-        throw UserError(Diagnostic::fatal("IMPR_RESU_2", "the result has no NUME_ORDRE " + std::to_string(n),
-                                          occ.locationOf("NUME_ORDRE")));
+        throw UserError(msg::make("IMPR_RESU_2", {{"n", std::to_string(n)}}, occ.locationOf("NUME_ORDRE")));
       }
       numbers.push_back(static_cast<int>(n));
     }
@@ -45,8 +45,7 @@ std::vector<int> selectedSteps(const Result& r, const KeywordTree& occ) {
     for (const double t : occ.reals("INST")) {
       const ResultStep* s = r.stepAtTime(t, precision, absolute);
       if (s == nullptr) {
-        throw UserError(Diagnostic::fatal(
-            "IMPR_RESU_2", "the result has no step at INST " + std::to_string(t), occ.locationOf("INST")));
+        throw UserError(msg::make("IMPR_RESU_2.2", {{"t", std::to_string(t)}}, occ.locationOf("INST")));
       }
       numbers.push_back(s->number);
     }
@@ -59,11 +58,7 @@ RealEditDescriptor valueFormat(const KeywordTree& occ) {
   const std::string text = occ.text("FORMAT_R");
   const auto d = parseRealEditDescriptor(text);
   if (!d) {
-    throw UserError(Diagnostic::fatal("IMPR_RESU_5",
-                                      "FORMAT_R='" + text + "' is not an edit descriptor stella writes",
-                                      occ.locationOf("FORMAT_R"))
-                        .withNote("give [kP]Ew.d, Dw.d, ESw.d or Fw.d, e.g. FORMAT_R='1PE12.5' or 'F10.3' "
-                                  "(G descriptors are not implemented yet)"));
+    throw UserError(msg::make("IMPR_RESU_5", {{"text", text}}, occ.locationOf("FORMAT_R")));
   }
   return *d;
 }
@@ -85,10 +80,8 @@ void restrictToGroups(OperatorCall& call, const Target& target, const KeywordTre
     return;
   }
   if (target.format != "RESULTAT") {
-    call.session.report(Diagnostic::alarm("IMPR_RESU_4",
-                                          "GROUP_NO / GROUP_MA do not restrict FORMAT='" + target.format +
-                                              "' yet: every node and cell is written",
-                                          occ.locationOf(occ.has("GROUP_NO") ? "GROUP_NO" : "GROUP_MA")));
+    call.session.report(msg::make("IMPR_RESU_4", {{"format", target.format}},
+                                  occ.locationOf(occ.has("GROUP_NO") ? "GROUP_NO" : "GROUP_MA")));
     return;
   }
   out.nodes.assign(static_cast<std::size_t>(mesh.nodeCount()), false);
@@ -96,8 +89,7 @@ void restrictToGroups(OperatorCall& call, const Target& target, const KeywordTre
   for (const auto& g : occ.texts("GROUP_MA")) {
     const auto* cells = mesh.cellGroup(g);
     if (cells == nullptr) {
-      throw UserError(Diagnostic::fatal("GROUP_1", "the mesh has no cell group (GROUP_MA) '" + g + "'",
-                                        occ.locationOf("GROUP_MA")));
+      throw UserError(msg::make("GROUP_1.2", {{"g", g}}, occ.locationOf("GROUP_MA")));
     }
     for (const CellId c : *cells) {
       out.cells[static_cast<std::size_t>(c)] = true;
@@ -109,8 +101,7 @@ void restrictToGroups(OperatorCall& call, const Target& target, const KeywordTre
   for (const auto& g : occ.texts("GROUP_NO")) {
     const auto* nodes = mesh.nodeGroup(g);
     if (nodes == nullptr) {
-      throw UserError(Diagnostic::fatal("GROUP_2", "the mesh has no node group (GROUP_NO) '" + g + "'",
-                                        occ.locationOf("GROUP_NO")));
+      throw UserError(msg::make("GROUP_2.2", {{"g", g}}, occ.locationOf("GROUP_NO")));
     }
     for (const NodeId n : *nodes) {
       out.nodes[static_cast<std::size_t>(n)] = true;
@@ -142,8 +133,7 @@ void writeOccurrence(OperatorCall& call, const Target& target, const KeywordTree
   std::shared_ptr<Result> result;
   std::string resultName = "RESU";
   if (occ.has("CHAM_GD")) {
-    throw UserError(Diagnostic::fatal("IMPR_RESU_1", "IMPR_RESU of a CHAM_GD is not implemented yet",
-                                      occ.locationOf("CHAM_GD")));
+    throw UserError(msg::make("IMPR_RESU_1", {}, occ.locationOf("CHAM_GD")));
   }
   if (occ.has("RESULTAT")) {
     const auto c = occ.conceptValue("RESULTAT");
@@ -169,8 +159,8 @@ void writeOccurrence(OperatorCall& call, const Target& target, const KeywordTree
     const auto known = result->fieldNames();
     for (const auto& f : out.fields) {
       if (std::find(known.begin(), known.end(), f) == known.end()) {
-        call.session.report(Diagnostic::alarm(
-            "IMPR_RESU_3", "the result " + resultName + " has no field " + f, occ.locationOf("NOM_CHAM")));
+        call.session.report(
+            msg::make("IMPR_RESU_3", {{"result_name", resultName}, {"f", f}}, occ.locationOf("NOM_CHAM")));
       }
     }
   }
@@ -207,18 +197,14 @@ void writeOccurrence(OperatorCall& call, const Target& target, const KeywordTree
 void writeAsterFormat(OperatorCall& call, const std::filesystem::path& path) {
   const KeywordTree& kw = call.keywords;
   const auto refuse = [](const KeywordTree& where, const std::string& keyword, const std::string& what) {
-    throw UserError(Diagnostic::fatal("IMPR_RESU_1",
-                                      "IMPR_RESU FORMAT='ASTER' with " + what + " is not implemented yet",
-                                      where.locationOf(keyword))
-                        .withNote("FORMAT='ASTER' writes a mesh: RESU=_F(MAILLAGE=...); write fields with "
-                                  "FORMAT='MED', 'RESULTAT', 'GMSH' or 'VTU'"));
+    throw UserError(msg::make("IMPR_RESU_1.2", {{"what", what}}, where.locationOf(keyword)));
   };
   if (kw.has("MODELE")) {
     refuse(kw, "MODELE", "MODELE");
   }
   const auto& occurrences = kw.occurrences("RESU");
   if (occurrences.size() > 1) {
-    refuse(occurrences[1], "MAILLAGE", "several RESU occurrences (several meshes in one .mail file)");
+    refuse(occurrences[1], "MAILLAGE", msg::text("IMPR_RESU_1.f1"));
   }
   for (const auto& occ : occurrences) {
     for (const char* k : {"RESULTAT", "CHAM_GD", "CARA_ELEM"}) {
@@ -227,9 +213,7 @@ void writeAsterFormat(OperatorCall& call, const std::filesystem::path& path) {
       }
     }
     if (const auto* f = occ.simple("FORMAT_R"); f != nullptr && !f->defaulted) {
-      refuse(occ, "FORMAT_R",
-             "FORMAT_R (the format of field values; coordinates are written with 17 "
-             "significant digits)");
+      refuse(occ, "FORMAT_R", msg::text("IMPR_RESU_1.f2"));
     }
     const auto mesh = meshConceptOf(occ);
     const std::string meshName = occ.conceptValue("MAILLAGE")->name;
@@ -252,18 +236,11 @@ Value runImprResu(OperatorCall& call) {
     return Value();
   }
   if (target.format == "IDEAS") {
-    throw UserError(Diagnostic::fatal("IMPR_RESU_1",
-                                      "IMPR_RESU FORMAT='" + target.format + "' is not implemented yet",
-                                      kw.locationOf("FORMAT"))
-                        .withNote("use FORMAT='MED', 'RESULTAT', 'GMSH' or 'VTU'"));
+    throw UserError(msg::make("IMPR_RESU_1.3", {{"format", target.format}}, kw.locationOf("FORMAT")));
   }
   if (target.format == "GMSH" && kw.real("VERSION") != 2.2) {
     // The catalogue refuses 1.0 and 1.2 (hors_perimetre): this guards a catalogue change.
-    throw UserError(Diagnostic::fatal("IMPR_RESU_1",
-                                      fmt::format("IMPR_RESU FORMAT='GMSH' VERSION={} is not implemented yet",
-                                                  kw.real("VERSION")),
-                                      kw.locationOf("VERSION"))
-                        .withNote("stella writes VERSION=2.2: a .msh 2.2 file with $NodeData/$ElementData"));
+    throw UserError(msg::make("IMPR_RESU_1.4", {{"real", kw.real("VERSION")}}, kw.locationOf("VERSION")));
   }
   const int unit = static_cast<int>(kw.integer("UNITE")); // each FORMAT block of the catalogue defaults it
   target.messageFile = target.format == "RESULTAT" && unit == 6;

@@ -2,6 +2,7 @@
 // the result file (unit 8) by default, after FILTRE, NOM_PARA (columns) and TRI (order).
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/inputs/TableFilter.hpp"
 #include "solver/post/Table.hpp"
@@ -21,8 +22,7 @@ void sortRows(const Table& table, const KeywordTree& sort, std::vector<std::size
   for (const auto& name : sort.texts("NOM_PARA")) {
     const Table::Column* c = table.column(name);
     if (c == nullptr) {
-      throw UserError(Diagnostic::fatal("TABLE_1", fmt::format("TRI: the table has no parameter '{}'", name),
-                                        sort.locationOf("NOM_PARA")));
+      throw UserError(msg::make("TABLE_1.2", {{"name", name}}, sort.locationOf("NOM_PARA")));
     }
     keys.push_back(c);
   }
@@ -53,10 +53,8 @@ Table selection(const Table& table, const KeywordTree& kw) {
   for (const auto& name : names) {
     const Table::Column* c = table.column(name);
     if (c == nullptr) {
-      throw UserError(
-          Diagnostic::fatal("TABLE_1", fmt::format("NOM_PARA: the table has no parameter '{}'", name),
-                            kw.locationOf("NOM_PARA"))
-              .withNote(fmt::format("its parameters are: {}", fmt::join(table.columnNames(), ", "))));
+      throw UserError(msg::make("TABLE_1.3", {{"name", name}, {"join", fmt::join(table.columnNames(), ", ")}},
+                                kw.locationOf("NOM_PARA")));
     }
     ValueList cells;
     for (std::size_t r : rows) {
@@ -71,9 +69,7 @@ Value runImprTable(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
   const std::string format = kw.text("FORMAT");
   if (format != "TABLEAU" && format != "ASTER") {
-    throw UserError(Diagnostic::fatal("TABLE_6", "IMPR_TABLE FORMAT='" + format + "' is not implemented yet",
-                                      kw.locationOf("FORMAT"))
-                        .withNote("use FORMAT='TABLEAU' (SEPARATEUR=',' for CSV) or 'ASTER'"));
+    throw UserError(msg::make("TABLE_6", {{"format", format}}, kw.locationOf("FORMAT")));
   }
   auto source = kw.conceptValue("TABLE");
   auto table = conceptData<Table>(source);

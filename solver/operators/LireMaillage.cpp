@@ -3,6 +3,7 @@
 // summary.
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/MeshConcept.hpp"
 #include "solver/io/MeshIO.hpp"
 #include "solver/mesh/MeshCheck.hpp"
@@ -29,9 +30,7 @@ MeshFormat formatOf(const KeywordTree& kw) {
   if (f == "GIBI") {
     return MeshFormat::Gibi;
   }
-  throw UserError(Diagnostic::fatal("LIRE_MAILLAGE_1", "FORMAT='" + f + "' is not implemented yet",
-                                    kw.locationOf("FORMAT"))
-                      .withNote("convert the mesh to MED, ASTER, GMSH or GIBI"));
+  throw UserError(msg::make("LIRE_MAILLAGE_1", {{"f", f}}, kw.locationOf("FORMAT")));
 }
 
 Value runLireMaillage(OperatorCall& call) {

@@ -2,6 +2,7 @@
 // results DEPL and SIEF_ELGA in an evol_elas from NUME_ORDRE 1.
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/functions/InstantList.hpp"
@@ -39,7 +40,7 @@ std::vector<double> instants(const KeywordTree& kw) {
     times = {0.0};
   }
   if (times.empty()) {
-    throw UserError(Diagnostic::fatal("STAT_1", "no instant to compute", kw.location()));
+    throw UserError(msg::make("STAT_1", {}, kw.location()));
   }
   return times;
 }

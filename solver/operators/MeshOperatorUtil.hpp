@@ -5,6 +5,7 @@
 
 #include "catalog/KeywordTree.hpp"
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/database/MeshConcept.hpp"
 
@@ -30,9 +31,9 @@ inline std::vector<CellId> cellsOfGroups(const Mesh& mesh, const KeywordTree& oc
       for (const auto& [n, v] : mesh.cellGroups()) {
         known += (known.empty() ? "" : ", ") + n;
       }
-      throw UserError(
-          Diagnostic::fatal("MESHOP_1", "the mesh has no group of cells '" + g + "'", occ.locationOf(key))
-              .withNote("groups of cells: " + (known.empty() ? std::string("(none)") : known)));
+      throw UserError(msg::make("MESHOP_1", {{"g", g}}, occ.locationOf(key))
+                          .withNote(msg::text("MESHOP_1.n2",
+                                              {{"value", (known.empty() ? std::string("(none)") : known)}})));
     }
     out.insert(out.end(), ids->begin(), ids->end());
   }
@@ -50,9 +51,9 @@ inline std::vector<NodeId> nodesOfGroups(const Mesh& mesh, const KeywordTree& oc
       for (const auto& [n, v] : mesh.nodeGroups()) {
         known += (known.empty() ? "" : ", ") + n;
       }
-      throw UserError(
-          Diagnostic::fatal("MESHOP_1", "the mesh has no group of nodes '" + g + "'", occ.locationOf(key))
-              .withNote("groups of nodes: " + (known.empty() ? std::string("(none)") : known)));
+      throw UserError(msg::make("MESHOP_1.2", {{"g", g}}, occ.locationOf(key))
+                          .withNote(msg::text("MESHOP_1.n1",
+                                              {{"value", (known.empty() ? std::string("(none)") : known)}})));
     }
     out.insert(out.end(), ids->begin(), ids->end());
   }

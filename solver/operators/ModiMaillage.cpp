@@ -4,6 +4,7 @@
 // DEFORME moves the nodes by the DEPL field of a result's step, then TRANSLATION, ROTATION,
 // ECHELLE and SYMETRIE move the nodes. Other operations are refused as not implemented yet.
 
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/inputs/FieldSelection.hpp"
@@ -34,10 +35,8 @@ std::optional<NodeId> singleNode(const Mesh& mesh, const KeywordTree& occ) {
   }
   const auto nodes = nodesOfGroups(mesh, occ, "GROUP_NO");
   if (nodes.size() != 1) {
-    throw UserError(Diagnostic::fatal("MODI_MAILLAGE_2",
-                                      "GROUP_NO must hold exactly one node, '" + occ.text("GROUP_NO") +
-                                          "' holds " + std::to_string(nodes.size()),
-                                      occ.locationOf("GROUP_NO")));
+    throw UserError(msg::make("MODI_MAILLAGE_2.2", {{"group", occ.text("GROUP_NO")}, {"count", nodes.size()}},
+                              occ.locationOf("GROUP_NO")));
   }
   return nodes.front();
 }
@@ -70,11 +69,7 @@ void orientOccurrence(OperatorCall& call, Mesh& mesh, const KeywordTree& occ, bo
 void deform(OperatorCall& call, Mesh& mesh, const KeywordTree& occ) {
   if (occ.has("DEPL") || occ.has("ALEA")) {
     const char* key = occ.has("DEPL") ? "DEPL" : "ALEA";
-    throw UserError(
-        Diagnostic::fatal("MODI_MAILLAGE_1",
-                          std::string("MODI_MAILLAGE/DEFORME/") + key + " is not implemented yet",
-                          occ.locationOf(key))
-            .withNote("give RESULTAT= (and NUME_ORDRE or INST) to move the nodes by a result's DEPL"));
+    throw UserError(msg::make("MODI_MAILLAGE_1", {{"key", key}}, occ.locationOf(key)));
   }
   const auto c = occ.conceptValue("RESULTAT");
   const auto result = conceptData<Result>(c);
@@ -83,16 +78,12 @@ void deform(OperatorCall& call, Mesh& mesh, const KeywordTree& occ) {
   const std::string name = occ.text("NOM_CHAM");
   const Field* f = step->field(name);
   if (f == nullptr || f->support() != FieldSupport::Node) {
-    throw UserError(Diagnostic::fatal(
-        "MODI_MAILLAGE_3",
-        fmt::format("the result {} has no nodal field {} at NUME_ORDRE {}", c->name, name, step->number),
-        occ.location()));
+    throw UserError(msg::make(
+        "MODI_MAILLAGE_3", {{"name", c->name}, {"name_2", name}, {"number", step->number}}, occ.location()));
   }
   if (result->mesh.get() != &mesh &&
       (result->mesh == nullptr || result->mesh->nodeCount() != mesh.nodeCount())) {
-    throw UserError(Diagnostic::fatal(
-        "MODI_MAILLAGE_4", "the result " + c->name + " is not defined on this mesh (node counts differ)",
-        occ.location()));
+    throw UserError(msg::make("MODI_MAILLAGE_4", {{"name", c->name}}, occ.location()));
   }
   const char* axes[3] = {"DX", "DY", "DZ"};
   int moved = 0;
@@ -125,19 +116,11 @@ Diagnostic unanchoredSkinAlarm(const Mesh& mesh, const KeywordTree& occ, const s
       groups.push_back(g);
     }
   }
-  return Diagnostic::alarm(
-             "ORIE_PEAU_4",
-             fmt::format("{} skin cell(s) of group(s) {} bound no volume cell and touch no skin cell that "
-                         "does: they were made coherent with each other (following {}), not oriented "
-                         "against a volume",
-                         cells.size(), fmt::format("'{}'", fmt::join(groups, "', '")),
-                         mesh.cellName(cells.front())),
-             occ.location())
-      .withNote(
-          "check that their normal points out of the body they stand for (for a rigid surface, "
-          "towards the body it touches); to choose it, use ORIE_NORM_COQUE with VECT_NORM (faces) or "
-          "ORIE_LIGNE with VECT_TANG (edges), or list these cells in an occurrence with skin cells of a "
-          "volume they touch");
+  return msg::make("ORIE_PEAU_4",
+                   {{"cells_count", cells.size()},
+                    {"format", fmt::format("'{}'", fmt::join(groups, "', '"))},
+                    {"cell_name", mesh.cellName(cells.front())}},
+                   occ.location());
 }
 
 Value runModiMaillage(OperatorCall& call) {
@@ -146,9 +129,8 @@ Value runModiMaillage(OperatorCall& call) {
   Mesh& mesh = *data->mesh;
   for (const char* unsupported : {"ORIE_FISSURE", "MODI_MAILLE", "MODI_BASE", "ABSC_CURV"}) {
     if (kw.has(unsupported)) {
-      throw UserError(Diagnostic::fatal(
-          "MODI_MAILLAGE_1", std::string("MODI_MAILLAGE/") + unsupported + " is not implemented yet",
-          kw.locationOf(unsupported)));
+      throw UserError(
+          msg::make("MODI_MAILLAGE_1.2", {{"unsupported", unsupported}}, kw.locationOf(unsupported)));
     }
   }
   for (const auto& occ : kw.occurrences("ORIE_PEAU")) {

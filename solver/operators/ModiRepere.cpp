@@ -16,6 +16,7 @@
 // TYPE_CHAM '*_GENE' and LIST_ORDRE are refused as not implemented yet.
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/fem/Quadrature.hpp"
@@ -35,14 +36,11 @@ namespace stella {
 namespace {
 
 UserError refused(const std::string& what, const SourceLocation& at) {
-  return UserError(
-      Diagnostic::fatal("MODI_REPERE_1", "MODI_REPERE " + what + " is not implemented yet", at)
-          .withNote("implemented: REPERE='UTILISATEUR' (ANGL_NAUT, VECT_X/VECT_Y) and "
-                    "'CYLINDRIQUE' (ORIGINE, AXE_Z); TYPE_CHAM VECT_2D, VECT_3D, TENS_2D, TENS_3D"));
+  return UserError(msg::make("MODI_REPERE_1", {{"what", what}}, at));
 }
 
-UserError invalid(const std::string& what, const SourceLocation& at, const std::string& fix) {
-  return UserError(Diagnostic::fatal("MODI_REPERE_2", what, at).withNote(fix));
+UserError invalid(std::string_view key, msg::Args args, const SourceLocation& at) {
+  return UserError(msg::make(key, args, at));
 }
 
 // One AFFE occurrence: the frame and where it applies.
@@ -64,30 +62,25 @@ Point3 point3(const std::vector<double>& v) {
 
 void userFrame(const KeywordTree& occ, int dim, FrameSpec& spec) {
   if (occ.has("ORIGINE")) {
-    throw invalid("ORIGINE defines a cylindrical frame, not REPERE='UTILISATEUR'", occ.locationOf("ORIGINE"),
-                  "give ANGL_NAUT (or VECT_X and VECT_Y), or use REPERE='CYLINDRIQUE'");
+    throw invalid("MODI_REPERE_2", {}, occ.locationOf("ORIGINE"));
   }
   if (occ.has("VECT_X")) {
     if (dim != 3) {
-      throw invalid("VECT_X / VECT_Y define a frame of a 3D mesh; this mesh is 2D", occ.locationOf("VECT_X"),
-                    "give the angle of the frame with ANGL_NAUT=alpha (degrees)");
+      throw invalid("MODI_REPERE_2.2", {}, occ.locationOf("VECT_X"));
     }
     const auto r = rotationFromVectors(point3(occ.reals("VECT_X")), point3(occ.reals("VECT_Y")));
     if (!r) {
-      throw invalid("VECT_X is zero or VECT_Y is parallel to it", occ.locationOf("VECT_X"),
-                    "give two non-parallel vectors");
+      throw invalid("MODI_REPERE_2.3", {}, occ.locationOf("VECT_X"));
     }
     spec.fixed = *r;
     return;
   }
   const auto angles = occ.reals("ANGL_NAUT");
   if (dim == 3 && angles.size() != 3) {
-    throw invalid("ANGL_NAUT needs three angles (alpha, beta, gamma) on a 3D mesh",
-                  occ.locationOf("ANGL_NAUT"), "give ANGL_NAUT=(alpha, beta, gamma) in degrees");
+    throw invalid("MODI_REPERE_2.4", {}, occ.locationOf("ANGL_NAUT"));
   }
   if (dim == 2 && angles.size() != 1) {
-    throw invalid("ANGL_NAUT takes one angle (about Z) on a 2D mesh", occ.locationOf("ANGL_NAUT"),
-                  "give ANGL_NAUT=alpha in degrees");
+    throw invalid("MODI_REPERE_2.5", {}, occ.locationOf("ANGL_NAUT"));
   }
   spec.fixed = nauticalRotation(angles[0], dim == 3 ? angles[1] : 0.0, dim == 3 ? angles[2] : 0.0);
 }
@@ -96,30 +89,27 @@ void cylindricalFrame(const KeywordTree& occ, int dim, FrameSpec& spec) {
   spec.cylindrical = true;
   if (!occ.has("ORIGINE")) {
     const char* k = occ.has("ANGL_NAUT") ? "ANGL_NAUT" : "VECT_X";
-    throw invalid(std::string(k) + " defines REPERE='UTILISATEUR'; the cylindrical frame needs ORIGINE",
-                  occ.locationOf(k),
-                  dim == 3 ? "give ORIGINE=(x, y, z) and AXE_Z=(ax, ay, az)" : "give ORIGINE=(x, y)");
+    throw invalid(dim == 3 ? "MODI_REPERE_2.origin_3d" : "MODI_REPERE_2.origin_2d", {{"keyword", k}},
+                  occ.locationOf(k));
   }
   const auto origin = occ.reals("ORIGINE");
   if (static_cast<int>(origin.size()) != dim) {
-    throw invalid(fmt::format("ORIGINE has {} coordinates; the mesh is {}D", origin.size(), dim),
-                  occ.locationOf("ORIGINE"), fmt::format("give {} coordinates", dim));
+    throw invalid("MODI_REPERE_2.6", {{"origin_count", origin.size()}, {"dim", dim}},
+                  occ.locationOf("ORIGINE"));
   }
   spec.origin = point3(origin);
   if (dim == 2) {
     if (occ.has("AXE_Z")) {
-      throw invalid("AXE_Z is given on a 2D mesh, where the axis of the cylindrical frame is Z",
-                    occ.locationOf("AXE_Z"), "remove AXE_Z");
+      throw invalid("MODI_REPERE_2.7", {}, occ.locationOf("AXE_Z"));
     }
     return;
   }
   if (!occ.has("AXE_Z")) {
-    throw invalid("the cylindrical frame of a 3D mesh needs AXE_Z", occ.locationOf("ORIGINE"),
-                  "give AXE_Z=(ax, ay, az)");
+    throw invalid("MODI_REPERE_2.8", {}, occ.locationOf("ORIGINE"));
   }
   const Point3 a = point3(occ.reals("AXE_Z"));
   if (norm(a) < 1.0e-12) {
-    throw invalid("AXE_Z is the zero vector", occ.locationOf("AXE_Z"), "give the direction of the axis");
+    throw invalid("MODI_REPERE_2.9", {}, occ.locationOf("AXE_Z"));
   }
   spec.axis = (1.0 / norm(a)) * a;
 }
@@ -150,13 +140,12 @@ void placeOf(const KeywordTree& occ, const Mesh& mesh, FrameSpec& spec) {
 std::vector<FrameSpec> frames(const KeywordTree& kw, const Mesh& mesh) {
   const std::string repere = kw.text("REPERE");
   if (repere != "UTILISATEUR" && repere != "CYLINDRIQUE") {
-    throw refused("REPERE='" + repere + "'", kw.locationOf("REPERE"));
+    throw refused(msg::text("MODI_REPERE_1.f1", {{"repere", repere}}), kw.locationOf("REPERE"));
   }
   const auto& occurrences = kw.occurrences("AFFE");
   if (occurrences.empty()) {
-    throw invalid("REPERE='" + repere + "' needs AFFE, which defines the frame", kw.locationOf("REPERE"),
-                  repere == "UTILISATEUR" ? "add AFFE=_F(ANGL_NAUT=...)"
-                                          : "add AFFE=_F(ORIGINE=..., AXE_Z=...)");
+    throw invalid(repere == "UTILISATEUR" ? "MODI_REPERE_2.affe_user" : "MODI_REPERE_2.affe_cylinder",
+                  {{"repere", repere}}, kw.locationOf("REPERE"));
   }
   const int dim = mesh.dimension();
   std::vector<FrameSpec> out;
@@ -186,34 +175,29 @@ std::vector<Change> changes(const KeywordTree& kw, bool ofResult, int dim) {
   std::vector<Change> out;
   const auto& occurrences = kw.occurrences("MODI_CHAM");
   if (occurrences.empty()) {
-    throw invalid("MODI_REPERE without MODI_CHAM changes nothing", kw.location(),
-                  "add MODI_CHAM=_F(NOM_CHAM=..., TYPE_CHAM=..., NOM_CMP=(...))");
+    throw invalid("MODI_REPERE_2.10", {}, kw.location());
   }
   for (const auto& occ : occurrences) {
     const std::string type = occ.text("TYPE_CHAM");
     const auto q = frameQuantity(type);
     if (!q) {
-      throw refused("TYPE_CHAM='" + type + "'", occ.locationOf("TYPE_CHAM"));
+      throw refused(msg::text("MODI_REPERE_1.f2", {{"type", type}}), occ.locationOf("TYPE_CHAM"));
     }
     if (dim == 3 && (*q == FrameQuantity::Vector2D || *q == FrameQuantity::Tensor2D)) {
-      throw invalid("TYPE_CHAM='" + type + "' is a 2D quantity; the mesh is 3D", occ.locationOf("TYPE_CHAM"),
-                    "use VECT_3D or TENS_3D");
+      throw invalid("MODI_REPERE_2.11", {{"type", type}}, occ.locationOf("TYPE_CHAM"));
     }
     const auto cmp = occ.texts("NOM_CMP");
     if (static_cast<int>(cmp.size()) != frameComponentCount(*q)) {
       throw invalid(
-          fmt::format("TYPE_CHAM='{}' needs {} components in NOM_CMP, {} given", type,
-                      frameComponentCount(*q), cmp.size()),
-          occ.locationOf("NOM_CMP"),
-          "VECT_2D (X, Y), VECT_3D (X, Y, Z), TENS_2D (XX, YY, ZZ, XY), TENS_3D (XX, YY, ZZ, XY, XZ, YZ)");
+          "MODI_REPERE_2.12",
+          {{"type", type}, {"frame_component_count", frameComponentCount(*q)}, {"cmp_count", cmp.size()}},
+          occ.locationOf("NOM_CMP"));
     }
     if (ofResult && !occ.has("NOM_CHAM")) {
-      throw invalid("MODI_CHAM of a RESULTAT needs NOM_CHAM", occ.location(),
-                    "name the field, e.g. NOM_CHAM='SIGM_NOEU'");
+      throw invalid("MODI_REPERE_2.13", {}, occ.location());
     }
     if (!ofResult && occ.has("NOM_CHAM")) {
-      throw invalid("NOM_CHAM names a field of a RESULTAT; with CHAM_GD the field is the concept",
-                    occ.locationOf("NOM_CHAM"), "remove NOM_CHAM");
+      throw invalid("MODI_REPERE_2.14", {}, occ.locationOf("NOM_CHAM"));
     }
     out.push_back({ofResult ? occ.text("NOM_CHAM") : std::string(), *q, cmp, &occ});
   }
@@ -285,14 +269,14 @@ public:
     for (const auto& name : change_.components) {
       const auto i = f.componentIndex(name);
       if (!i) {
-        throw invalid(fmt::format("{} has no component {} (its components: {})", label_, name,
-                                  fmt::join(f.components(), ", ")),
-                      change_.occ->locationOf("NOM_CMP"), "give components the field has");
+        throw invalid("MODI_REPERE_2.15",
+                      {{"label", label_}, {"name", name}, {"join", fmt::join(f.components(), ", ")}},
+                      change_.occ->locationOf("NOM_CMP"));
       }
       index_.push_back(*i);
     }
     if (frame_.byNodeGroup && f.support() != FieldSupport::Node) {
-      throw refused("AFFE GROUP_NO on a field that is not nodal (" + label_ + ")", frame_.location);
+      throw refused(msg::text("MODI_REPERE_1.f3", {{"label", label_}}), frame_.location);
     }
     switch (f.support()) {
     case FieldSupport::Node:
@@ -339,10 +323,11 @@ private:
         points.assign(static_cast<std::size_t>(count), Point3{0.0, 0.0, 0.0}); // not used
       }
       if (static_cast<int>(points.size()) != count) {
-        throw refused(
-            fmt::format("REPERE='CYLINDRIQUE' of {} on cell {} ({} points of a {}, an unknown family)",
-                        label_, mesh.cellName(c), count, name(mesh.cellType(c))),
-            change_.occ->location());
+        throw refused(msg::text("MODI_REPERE_1.f4", {{"label", label_},
+                                                     {"cell_name", mesh.cellName(c)},
+                                                     {"count", count},
+                                                     {"name", name(mesh.cellType(c))}}),
+                      change_.occ->location());
       }
       const Point3 centre = positions_.cellCentre(c);
       for (int q = 0; q < count; ++q) {
@@ -368,10 +353,8 @@ private:
         local = other ? cylindricalRotation(frame_.origin, frame_.axis, *other) : std::nullopt;
       }
       if (!local) {
-        throw invalid(fmt::format("{}: a point ({}, {}, {}) lies on the axis of the cylindrical frame and so "
-                                  "does the centre of its cell",
-                                  label_, at[0], at[1], at[2]),
-                      frame_.location, "check ORIGINE and AXE_Z");
+        throw invalid("MODI_REPERE_2.16",
+                      {{"label", label_}, {"at", at[0]}, {"at_2", at[1]}, {"at_3", at[2]}}, frame_.location);
       }
       r = *local;
     }
@@ -408,8 +391,7 @@ std::vector<const ResultStep*> selectedSteps(const Result& r, const std::string&
     for (const auto n : kw.integers("NUME_ORDRE")) {
       const ResultStep* s = r.stepNumber(static_cast<int>(n));
       if (s == nullptr) {
-        throw invalid(fmt::format("result {} has no NUME_ORDRE {}", name, n), kw.locationOf("NUME_ORDRE"),
-                      "give a stored step");
+        throw invalid("MODI_REPERE_2.17", {{"name", name}, {"n", n}}, kw.locationOf("NUME_ORDRE"));
       }
       out.push_back(s);
     }
@@ -428,8 +410,7 @@ std::vector<const ResultStep*> selectedSteps(const Result& r, const std::string&
     for (const double t : times) {
       const ResultStep* s = r.stepAtTime(t, kw.real("PRECISION"), kw.text("CRITERE") == "ABSOLU");
       if (s == nullptr) {
-        throw invalid(fmt::format("result {} has no step at INST {}", name, t), kw.locationOf(key),
-                      "give a stored time or widen PRECISION");
+        throw invalid("MODI_REPERE_2.18", {{"name", name}, {"t", t}}, kw.locationOf(key));
       }
       out.push_back(s);
     }
@@ -465,9 +446,9 @@ Value ofResult(OperatorCall& call) {
       const auto it = fields.find(ch.field);
       const Field* f = it != fields.end() ? it->second.get() : s->field(ch.field);
       if (f == nullptr) {
-        throw invalid(
-            fmt::format("result {} has no field {} at NUME_ORDRE {}", concept_->name, ch.field, s->number),
-            ch.occ->locationOf("NOM_CHAM"), "compute it first (CALC_CHAMP) or name a stored field");
+        throw invalid("MODI_REPERE_2.19",
+                      {{"name", concept_->name}, {"field", ch.field}, {"number", s->number}},
+                      ch.occ->locationOf("NOM_CHAM"));
       }
       fields[ch.field] = changed(*f, ch, specs, positions, fmt::format("{} of {}", ch.field, concept_->name));
     }
@@ -494,7 +475,7 @@ Value ofField(OperatorCall& call) {
   const auto concept_ = kw.conceptValue("CHAM_GD");
   auto source = conceptData<FieldConcept>(concept_);
   if (source == nullptr || source->field == nullptr || source->mesh == nullptr) {
-    throw refused("CHAM_GD of a concept that is not a field made by CREA_CHAMP", kw.locationOf("CHAM_GD"));
+    throw refused(msg::text("MODI_REPERE_1.f5"), kw.locationOf("CHAM_GD"));
   }
   const auto specs = frames(kw, *source->mesh);
   const auto todo = changes(kw, false, source->mesh->dimension());

@@ -13,6 +13,7 @@
 // TRAC_NOR / TRAC_DIR, MOMENT and ELEM_PRINCIPAUX are refused as not implemented yet.
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/functions/RealFunction.hpp"
@@ -33,10 +34,7 @@ namespace stella {
 namespace {
 
 void refuse(const KeywordTree& a, const std::string& what, const std::string& keyword) {
-  throw UserError(Diagnostic::fatal("RELEVE_1", fmt::format("POST_RELEVE_T {} is not implemented yet", what),
-                                    a.locationOf(keyword))
-                      .withNote("implemented: OPERATION='EXTRACTION' or 'MOYENNE' on nodal fields of a "
-                                "RESULTAT, with NOM_CMP, TOUT_CMP, INVARIANT or RESULTANTE"));
+  throw UserError(msg::make("RELEVE_1", {{"what", what}}, a.locationOf(keyword)));
 }
 
 void refuseUnsupported(const KeywordTree& a) {
@@ -49,14 +47,14 @@ void refuseUnsupported(const KeywordTree& a) {
   const auto operations = a.texts("OPERATION");
   for (const auto& op : operations) {
     if (op != "EXTRACTION" && op != "MOYENNE") {
-      refuse(a, fmt::format("OPERATION='{}'", op), "OPERATION");
+      refuse(a, msg::text("RELEVE_1.f1", {{"op", op}}), "OPERATION");
     }
   }
   if (a.text("REPERE") != "GLOBAL") { // in the block of every OPERATION but EXTREMA and MOYENNE_ARITH
-    refuse(a, fmt::format("REPERE='{}'", a.text("REPERE")), "REPERE");
+    refuse(a, msg::text("RELEVE_1.f2", {{"text", a.text("REPERE")}}), "REPERE");
   }
   if (a.has("RESULTANTE") && std::find(operations.begin(), operations.end(), "MOYENNE") != operations.end()) {
-    refuse(a, "RESULTANTE with OPERATION='MOYENNE'", "RESULTANTE");
+    refuse(a, msg::text("RELEVE_1.f3"), "RESULTANTE");
   }
 }
 
@@ -67,8 +65,7 @@ std::vector<const ResultStep*> wantedSteps(const Result& result, const std::stri
     for (auto n : a.integers("NUME_ORDRE")) {
       const ResultStep* s = result.stepNumber(static_cast<int>(n));
       if (s == nullptr) {
-        throw UserError(Diagnostic::fatal("RESU_1", fmt::format("result {} has no NUME_ORDRE {}", name, n),
-                                          a.locationOf("NUME_ORDRE")));
+        throw UserError(msg::make("RESU_1.2", {{"name", name}, {"n", n}}, a.locationOf("NUME_ORDRE")));
       }
       out.push_back(s);
     }
@@ -88,8 +85,8 @@ std::vector<const ResultStep*> wantedSteps(const Result& result, const std::stri
     for (double t : times) {
       const ResultStep* s = result.stepAtTime(t, precision, absolute);
       if (s == nullptr) {
-        throw UserError(Diagnostic::fatal("RESU_1", fmt::format("result {} has no step at INST {}", name, t),
-                                          a.locationOf(a.has("INST") ? "INST" : "LIST_INST")));
+        throw UserError(msg::make("RESU_1.3", {{"name", name}, {"t", t}},
+                                  a.locationOf(a.has("INST") ? "INST" : "LIST_INST")));
       }
       out.push_back(s);
     }
@@ -227,13 +224,10 @@ void average(const Mesh& mesh, const Field& field, const std::string& fieldName,
     const auto values = valuesAt(field, columns, static_cast<std::size_t>(n));
     for (std::size_t i = 0; i < values.size(); ++i) {
       if (!values[i]) {
-        throw UserError(Diagnostic::fatal(
-                            "RELEVE_2",
-                            fmt::format("{} of {} has no value at node {}: the mean along the path needs one "
-                                        "at every node",
-                                        columns.names[i], fieldName, mesh.nodeName(n)),
-                            a.location())
-                            .withNote("restrict GROUP_NO to nodes of the cells where the field is computed"));
+        throw UserError(msg::make(
+            "RELEVE_2",
+            {{"names", columns.names[i]}, {"field_name", fieldName}, {"node_name", mesh.nodeName(n)}},
+            a.location()));
       }
       series[i].push_back(*values[i]);
     }
@@ -268,13 +262,7 @@ void action(const KeywordTree& a, Table& table) {
   for (const ResultStep* step : wantedSteps(*result, concept_->name, a)) {
     const Field& field = selectField(*step, concept_->name, fieldName, a);
     if (field.support() != FieldSupport::Node) {
-      throw UserError(
-          Diagnostic::fatal(
-              "RELEVE_1",
-              fmt::format("POST_RELEVE_T on the element field {} is not implemented yet", fieldName),
-              a.locationOf("NOM_CHAM"))
-              .withNote(
-                  "compute a nodal field with CALC_CHAMP (SIEF_NOEU, SIEQ_NOEU, EPSI_NOEU, REAC_NODA...)"));
+      throw UserError(msg::make("RELEVE_1.2", {{"field_name", fieldName}}, a.locationOf("NOM_CHAM")));
     }
     const Row head{{"INTITULE", Value(a.text("INTITULE"))},
                    {"RESU", Value(concept_->name)},

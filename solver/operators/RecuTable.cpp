@@ -1,6 +1,7 @@
 // RECU_TABLE: a copy of a table attached to a result (NOM_TABLE), as a table concept.
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/post/Table.hpp"
@@ -15,9 +16,7 @@ namespace {
 Value runRecuTable(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
   if (kw.has("NOM_PARA")) {
-    throw UserError(
-        Diagnostic::fatal("TABLE_6", "RECU_TABLE/NOM_PARA is not implemented yet", kw.locationOf("NOM_PARA"))
-            .withNote("give NOM_TABLE, the name of a table the result holds"));
+    throw UserError(msg::make("TABLE_6.2", {}, kw.locationOf("NOM_PARA")));
   }
   auto source = kw.conceptValue("CO");
   auto result = conceptData<Result>(source);
@@ -31,11 +30,9 @@ Value runRecuTable(OperatorCall& call) {
   auto found = it == result->tables.end() ? nullptr : std::dynamic_pointer_cast<Table>(it->second);
   if (!found) {
     throw UserError(
-        Diagnostic::fatal("TABLE_7", fmt::format("RECU_TABLE: {} has no table '{}'", source->name, name),
-                          kw.locationOf("NOM_TABLE"))
-            .withNote(names.empty() ? "the result holds no table: STAT_NON_LINE attaches 'OBSERVATION' "
-                                      "(OBSERVATION=_F(...)) and 'STAT' (MESURE=_F(TABLE='OUI'))"
-                                    : fmt::format("the result holds: {}", fmt::join(names, ", "))));
+        msg::make("TABLE_7", {{"name", source->name}, {"name_2", name}}, kw.locationOf("NOM_TABLE"))
+            .withNote(names.empty() ? msg::text("TABLE_7.n1")
+                                    : msg::text("TABLE_7.n2", {{"join", fmt::join(names, ", ")}})));
   }
   auto table = std::make_shared<Table>(*found);
   if (kw.has("TITRE")) {

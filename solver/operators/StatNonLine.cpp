@@ -10,6 +10,7 @@
 // What the catalogue has and stella does not is refused by name (StatNonLineKeywords).
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/contact/ContactStepConstraint.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/database/Result.hpp"
@@ -67,13 +68,8 @@ CellLaws cellLawsOf(const KeywordTree& kw, const Model& model, const MaterialFie
       const Material* m = materials.material(c);
       if (relation == "VMIS_ISOT_LINE" && model.cell(c).kind == ElementKind::Volume && m != nullptr &&
           !m->hardening) {
-        throw UserError(
-            Diagnostic::fatal("MATER_8",
-                              fmt::format("RELATION='VMIS_ISOT_LINE' on cell {} needs ECRO_LINE in "
-                                          "material {}",
-                                          model.mesh->cellName(c), m->name),
-                              occ.locationOf("RELATION"))
-                .withNote("add ECRO_LINE=_F(D_SIGM_EPSI=..., SY=...) to DEFI_MATERIAU"));
+        throw UserError(msg::make("MATER_8", {{"cell_name", model.mesh->cellName(c)}, {"name", m->name}},
+                                  occ.locationOf("RELATION")));
       }
       if (large && model.cell(c).kind == ElementKind::Volume &&
           model.cell(c).volumeStrain == fem::VolumeStrain::CellMean) {
@@ -100,14 +96,11 @@ std::shared_ptr<Result> resultFor(OperatorCall& call, const std::shared_ptr<cons
   const KeywordTree& kw = call.keywords;
   std::shared_ptr<Result> result = call.reused ? conceptData<Result>(call.reused) : nullptr;
   if (!call.reused && kw.has("RESULTAT")) {
-    throw UserError(
-        Diagnostic::fatal("SNL_5", "RESULTAT= continues a result only with reuse=", kw.locationOf("RESULTAT"))
-            .withNote("write RES = STAT_NON_LINE(reuse=RES, RESULTAT=RES, ...)"));
+    throw UserError(msg::make("SNL_5", {}, kw.locationOf("RESULTAT")));
   }
   if (result) {
     if (result->mesh.get() != model->mesh.get()) {
-      throw UserError(
-          Diagnostic::fatal("SNL_5", "reuse=: the result is on another mesh than the model", call.location));
+      throw UserError(msg::make("SNL_5.2", {}, call.location));
     }
     const double tolerance = 1.0e-9 * std::max(1.0, std::fabs(firstComputed));
     std::erase_if(result->steps, [&](const ResultStep& s) { return s.time >= firstComputed - tolerance; });
@@ -340,38 +333,32 @@ Value runStatNonLine(OperatorCall& call) {
     const SteppingFailure& f = run.failure;
     if (f.outcome.singularTangent) {
       const Diagnostic& singular = *f.outcome.singularTangent;
-      Diagnostic d = Diagnostic::noConvergence(
-          "SNL_12",
-          fmt::format("no convergence from INST {:g} to INST {:g} after {} cut(s): the tangent matrix became "
-                      "singular in the iterations ({}: {}); {}",
-                      f.startTime, f.time, run.cuts, singular.id, singular.message, kept),
-          call.location);
-      d.withNote(fmt::format(
-          "no further cut: {}; a tangent that turns singular in the iterations usually means that "
-          "Newton diverged (refine the list of instants, allow more cuts) or that the material has "
-          "no stiffness left: perfectly plastic points (D_SIGM_EPSI = 0) have none along their flow, "
-          "and a region that flows freely (a limit load, or an incompressible flow the mean-dilatation "
-          "'_SI' cells allow) makes the tangent singular; NEWTON=_F(MATRICE='ELASTIQUE') with a larger "
-          "CONVERGENCE ITER_GLOB_ELAS iterates with the elastic matrix, which stays regular",
-          f.reason));
+      Diagnostic d = msg::make("SNL_12",
+                               {{"start_time", f.startTime},
+                                {"time", f.time},
+                                {"cuts", run.cuts},
+                                {"id", singular.id},
+                                {"message", singular.message},
+                                {"kept", kept}},
+                               call.location);
+      d.withNote(msg::text("SNL_12.n1", {{"reason", f.reason}}));
       for (const std::string& note : singular.notes) { // if the model itself has a free motion
         d.withNote(note);
       }
       throw UserError(std::move(d));
     }
     Diagnostic d =
-        Diagnostic::noConvergence(
-            "SNL_3",
-            fmt::format("no convergence from INST {:g} to INST {:g} ({}; RESI_GLOB_RELA = {:.3e} after {} "
-                        "iterations) after {} cut(s); {}",
-                        f.startTime, f.time,
-                        f.outcome.integrationFailed ? "the behaviour integration failed"
-                                                    : "residual too large",
-                        f.outcome.resiRela, f.outcome.iterations, run.cuts, kept),
-            call.location)
-            .withNote(fmt::format("no further cut: {}; refine the list of instants, allow more cuts "
-                                  "(DEFI_LIST_INST ECHEC SUBD_NIVEAU), or raise ITER_GLOB_MAXI",
-                                  f.reason));
+        msg::make("SNL_3",
+                  {{"start_time", f.startTime},
+                   {"time", f.time},
+                   {"integration_failed",
+                    f.outcome.integrationFailed ? "the behaviour integration failed" : "residual too large"},
+                   {"resi_rela", f.outcome.resiRela},
+                   {"iterations", f.outcome.iterations},
+                   {"cuts", run.cuts},
+                   {"kept", kept},
+                   {"reason", f.reason}},
+                  call.location);
     if (const std::string note = constraint != nullptr ? constraint->noConvergenceNote() : std::string();
         !note.empty() && !f.outcome.integrationFailed) {
       d.withNote(note);

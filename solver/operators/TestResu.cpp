@@ -6,6 +6,7 @@
 // component. CARTE, GENE, OBJET, TEST_NAN and MAILLAGE are refused as not implemented yet.
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/inputs/FieldSelection.hpp"
 #include "solver/inputs/TestKeywords.hpp"
@@ -25,9 +26,8 @@ void testParameter(OperatorCall& call, const KeywordTree& occ, const Result& res
   const std::string para = occ.text("PARA");
   auto it = step.parameters.find(para);
   if (it == step.parameters.end()) {
-    throw UserError(Diagnostic::fatal(
-        "RESU_7", fmt::format("result {} has no parameter {} at NUME_ORDRE {}", name, para, step.number),
-        occ.locationOf("PARA")));
+    throw UserError(msg::make("RESU_7", {{"name", name}, {"para", para}, {"number", step.number}},
+                              occ.locationOf("PARA")));
   }
   (void)result;
   reportTest(call.testReport(),
@@ -42,9 +42,9 @@ void testFieldValue(OperatorCall& call, const KeywordTree& occ, const Mesh& mesh
                     const std::string& fieldName, std::vector<std::pair<std::string, std::string>> header) {
   const std::string type = occ.textOr("TYPE_TEST", "");
   if (!occ.has("NOM_CMP") && type.empty()) {
-    throw UserError(Diagnostic::fatal("RESU_3", "NOM_CMP is needed to test a field value", occ.location())
-                        .withNote(fmt::format("components of {}: {}; or give TYPE_TEST to reduce them all",
-                                              fieldName, fmt::join(field.components(), ", "))));
+    throw UserError(msg::make("RESU_3.2",
+                              {{"field_name", fieldName}, {"join", fmt::join(field.components(), ", ")}},
+                              occ.location()));
   }
   const std::string cmp = occ.textOr("NOM_CMP", "");
   std::vector<std::size_t> components;
@@ -67,8 +67,7 @@ void testFieldValue(OperatorCall& call, const KeywordTree& occ, const Mesh& mesh
       }
     }
     if (values.empty()) {
-      throw UserError(
-          Diagnostic::fatal("RESU_6", "the selection holds no value of the component", occ.location()));
+      throw UserError(msg::make("RESU_6", {}, occ.location()));
     }
     value = reduceByTestType(type, values);
     header.emplace_back("TYPE_TEST", type);
@@ -78,20 +77,16 @@ void testFieldValue(OperatorCall& call, const KeywordTree& occ, const Mesh& mesh
   } else {
     header.emplace_back("NOM_CMP", cmp);
     if (!sel.single) {
-      throw UserError(
-          Diagnostic::fatal("RESU_4", "the keywords designate several values; one is needed", occ.location())
-              .withNote(field.support() == FieldSupport::Node
-                            ? "give NOEUD or a GROUP_NO of one node, or TYPE_TEST"
-                        : field.support() == FieldSupport::CellNode
-                            ? "give MAILLE (or a GROUP_MA of one cell) and NOEUD (or POINT), or TYPE_TEST"
-                            : "give MAILLE (or a GROUP_MA of one cell) and POINT, or TYPE_TEST"));
+      throw UserError(msg::make("RESU_4.3", {}, occ.location())
+                          .withNote(field.support() == FieldSupport::Node       ? msg::text("RESU_4.n1")
+                                    : field.support() == FieldSupport::CellNode ? msg::text("RESU_4.n2")
+                                                                                : msg::text("RESU_4.n3")));
     }
     const std::size_t e = sel.entities.front();
     const std::size_t c = components.front();
     if (!field.defined(e, c)) {
-      throw UserError(Diagnostic::fatal(
-          "RESU_6", fmt::format("component {} of {} has no value at {}", cmp, fieldName, sel.label),
-          occ.location()));
+      throw UserError(msg::make("RESU_6.2", {{"cmp", cmp}, {"field_name", fieldName}, {"label", sel.label}},
+                                occ.location()));
     }
     value = field.value(e, c);
     if (field.support() == FieldSupport::CellNode && !occ.has("POINT")) {
@@ -115,8 +110,7 @@ void testFieldValue(OperatorCall& call, const KeywordTree& occ, const Mesh& mesh
 void testResu(OperatorCall& call, const KeywordTree& occ) {
   for (const char* k : {"FREQ", "NUME_MODE", "NOEUD_CMP", "NOM_CAS", "ANGLE", "NOM_VARI"}) {
     if (occ.has(k)) {
-      throw UserError(Diagnostic::fatal("TEST_1", fmt::format("TEST_RESU RESU {} is not implemented yet", k),
-                                        occ.locationOf(k)));
+      throw UserError(msg::make("TEST_1.2", {{"k", k}}, occ.locationOf(k)));
     }
   }
   auto concept_ = occ.conceptValue("RESULTAT");
@@ -141,11 +135,12 @@ void testFieldConcept(OperatorCall& call, const KeywordTree& occ, const std::str
   STELLA_ASSERT(data != nullptr && data->field != nullptr && data->mesh != nullptr, "CHAM_GD holds no field");
   const bool nodal = data->field->support() == FieldSupport::Node;
   if (nodal != (keyword == "CHAM_NO")) {
-    throw UserError(Diagnostic::fatal("RESU_8",
-                                      fmt::format("{} is a {} field ({}); test it under {}", concept_->name,
-                                                  nodal ? "nodal" : "cell", data->fieldType,
-                                                  nodal ? "CHAM_NO" : "CHAM_ELEM"),
-                                      occ.locationOf("CHAM_GD")));
+    throw UserError(msg::make("RESU_8",
+                              {{"name", concept_->name},
+                               {"nodal", nodal ? "nodal" : "cell"},
+                               {"field_type", data->fieldType},
+                               {"nodal_2", nodal ? "CHAM_NO" : "CHAM_ELEM"}},
+                              occ.locationOf("CHAM_GD")));
   }
   testFieldValue(call, occ, *data->mesh, *data->field, data->origin, {{keyword, concept_->name}});
 }
@@ -153,15 +148,11 @@ void testFieldConcept(OperatorCall& call, const KeywordTree& occ, const std::str
 Value runTestResu(OperatorCall& call) {
   const KeywordTree& kw = call.keywords;
   if (kw.has("CARTE")) {
-    throw UserError(
-        Diagnostic::fatal("TEST_1", "TEST_RESU CARTE is not implemented yet", kw.locationOf("CARTE"))
-            .withNote("no command of stella makes a carte; test fields with CHAM_NO, CHAM_ELEM or RESU"));
+    throw UserError(msg::make("TEST_1.3", {}, kw.locationOf("CARTE")));
   }
   for (const char* k : {"GENE", "OBJET", "TEST_NAN", "MAILLAGE"}) {
     if (kw.has(k)) {
-      throw UserError(
-          Diagnostic::fatal("TEST_1", fmt::format("TEST_RESU {} is not implemented yet", k), kw.locationOf(k))
-              .withNote("test result fields with RESU=_F(RESULTAT=..., NOM_CHAM=..., NOM_CMP=...)"));
+      throw UserError(msg::make("TEST_1.4", {{"k", k}}, kw.locationOf(k)));
     }
   }
   for (const char* k : {"CHAM_NO", "CHAM_ELEM"}) {

@@ -2,6 +2,7 @@
 // column) against VALE_CALC and a reference, printing OK/NOOK lines.
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/ConceptStore.hpp"
 #include "solver/inputs/TableFilter.hpp"
 #include "solver/inputs/TestKeywords.hpp"
@@ -24,11 +25,10 @@ Value runTestTable(OperatorCall& call) {
   const std::string para = kw.text("NOM_PARA");
   const Table::Column* col = table->column(para);
   if (col == nullptr) {
-    throw UserError(
-        Diagnostic::fatal("TABLE_1",
-                          fmt::format("the table {} has no parameter '{}'", tableConcept->name, para),
-                          kw.locationOf("NOM_PARA"))
-            .withNote(fmt::format("its parameters are: {}", fmt::join(table->columnNames(), ", "))));
+    throw UserError(msg::make(
+        "TABLE_1.4",
+        {{"name", tableConcept->name}, {"para", para}, {"join", fmt::join(table->columnNames(), ", ")}},
+        kw.locationOf("NOM_PARA")));
   }
   std::vector<std::size_t> rows = filterRows(*table, kw.occurrences("FILTRE"));
   std::vector<double> values;
@@ -39,14 +39,10 @@ Value runTestTable(OperatorCall& call) {
   }
   const std::string type = kw.textOr("TYPE_TEST", "");
   if (values.empty() || (type.empty() && values.size() != 1)) {
-    throw UserError(
-        Diagnostic::fatal("TABLE_3",
-                          fmt::format("the filters leave {} numeric value(s) of {} in table {}; exactly "
-                                      "one is needed",
-                                      values.size(), para, tableConcept->name),
-                          call.location)
-            .withNote(values.empty() ? "check the FILTRE values against the table (IMPR_TABLE prints it)"
-                                     : "add a FILTRE, or TYPE_TEST='MIN', 'MAX', 'SOMM' or 'SOMM_ABS'"));
+    throw UserError(msg::make("TABLE_3",
+                              {{"values_count", values.size()}, {"para", para}, {"name", tableConcept->name}},
+                              call.location)
+                        .withNote(values.empty() ? msg::text("TABLE_3.n1") : msg::text("TABLE_3.n2")));
   }
   double computed = type.empty() ? values.front() : reduceByTestType(type, values);
   if (kw.text("VALE_ABS") == "OUI") {

@@ -3,6 +3,7 @@
 #include "solver/post/DerivedFields.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/fem/GaussExtrapolation.hpp"
 #include "solver/fem/Kinematics.hpp"
 #include "solver/post/TensorInvariants.hpp"
@@ -151,10 +152,9 @@ Field strainAtGaussPoints(const Model& model, const Field& depl, const MaterialF
       fem::computeKinematics(mesh.cellType(cell), modelling, coordinates(mesh, cell, dim), kin,
                              model.cell(cell).volumeStrain);
     } catch (const fem::DegenerateElementError& e) {
-      throw UserError(
-          Diagnostic::fatal("CALC_8", fmt::format("cell {} has a degenerate Jacobian ({}) at its "
-                                                  "Gauss point {}: its strain cannot be computed",
-                                                  mesh.cellName(cell), e.jacobian(), e.gaussPoint() + 1)));
+      throw UserError(msg::make("CALC_8", {{"cell_name", mesh.cellName(cell)},
+                                           {"jacobian", e.jacobian()},
+                                           {"gauss_point", e.gaussPoint() + 1}}));
     }
     const auto nodes = mesh.cellNodes(cell);
     u.resize(static_cast<Eigen::Index>(nodes.size()) * dim);
@@ -168,10 +168,7 @@ Field strainAtGaussPoints(const Model& model, const Field& depl, const MaterialF
     if (modelling == fem::Modelling::PlaneStress) {
       const Material* m = materials != nullptr ? materials->material(cell) : nullptr;
       if (m == nullptr || !m->elastic) {
-        throw UserError(Diagnostic::fatal(
-            "CALC_7",
-            fmt::format("EPSI in C_PLAN needs the elastic NU of cell {}, which has no ELAS material",
-                        mesh.cellName(cell))));
+        throw UserError(msg::make("CALC_7", {{"cell_name", mesh.cellName(cell)}}));
       }
       nu = m->elastic->poissonRatio;
     }

@@ -1,6 +1,7 @@
 #include "ConceptMethods.hpp"
 
 #include "interpreter/Diagnostics.hpp"
+#include "messages/Messages.hpp"
 #include "solver/session/MeshMethods.hpp"
 
 #include <map>
@@ -11,7 +12,7 @@ namespace {
 
 Value getName(const Concept& object, const CallArguments& args) {
   if (!args.positional.empty() || !args.keywords.empty()) {
-    throw UserError(Diagnostic::fatal("LANG_ARGS", object.name + ".getName() takes no arguments"));
+    throw UserError(msg::make("LANG_ARGS", {{"name", object.name}}));
   }
   return Value(object.name);
 }

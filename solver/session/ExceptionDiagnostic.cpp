@@ -1,5 +1,6 @@
 #include "ExceptionDiagnostic.hpp"
 #include "MemoryLimit.hpp"
+#include "messages/Messages.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -45,19 +46,18 @@ std::string osAdvice(int error) {
   switch (error) {
   case ENOSPC:
   case EDQUOT:
-    return "free some space on that file system (or raise the quota), or write the results elsewhere";
+    return msg::text("OS.space");
   case EFBIG:
-    return "the file-size limit of the process was reached (ulimit -f): raise it, or write fewer steps "
-           "or fields";
+    return msg::text("OS.file_size");
   case EACCES:
   case EROFS:
-    return "make the folder writable, or give a destination you can write";
+    return msg::text("OS.access");
   case EISDIR:
-    return "the destination is a folder: give a file name";
+    return msg::text("OS.is_folder");
   case ENOTDIR:
-    return "a part of the destination path is a file, not a folder: correct the path";
+    return msg::text("OS.not_folder");
   default:
-    return "check the path and the file system";
+    return msg::text("OS.other");
   }
 }
 
@@ -75,34 +75,27 @@ Diagnostic diagnosticOf(const std::exception& e, const std::string& during, Sour
         fe->code().category() == std::generic_category() || fe->code().category() == std::system_category()
             ? fe->code().value()
             : 0;
-    return Diagnostic::fatal("RUN_6",
-                             fmt::format("a file operation failed while {}: {}: {}", during, paths,
-                                         error != 0 ? osReason(error) : fe->code().message()),
-                             std::move(at))
+    return msg::make("RUN_6",
+                     {{"during", during},
+                      {"paths", paths},
+                      {"error0", error != 0 ? osReason(error) : fe->code().message()}},
+                     std::move(at))
         .withNote(osAdvice(error));
   }
   if (const auto* se = dynamic_cast<const std::system_error*>(&e)) {
-    return Diagnostic::fatal("RUN_6",
-                             fmt::format("an operating-system call failed while {}: {}", during, se->what()),
-                             std::move(at))
+    return msg::make("RUN_6.2", {{"during", during}, {"what", se->what()}}, std::move(at))
         .withNote(osAdvice(se->code().value()));
   }
   if (dynamic_cast<const std::bad_alloc*>(&e) != nullptr) {
     if (activeMemoryLimit() > 0.0) {
-      return Diagnostic::fatal("MEMORY_1",
-                               fmt::format("not enough memory while {}: the run's limit of {:g} MiB (P "
-                                           "memory_limit) is reached",
-                                           during, activeMemoryLimit()),
-                               std::move(at))
-          .withNote("raise P memory_limit in the export, or use a coarser mesh");
+      return msg::make("MEMORY_1", {{"during", during}, {"active_memory_limit", activeMemoryLimit()}},
+                       std::move(at));
     }
-    return Diagnostic::fatal("MEMORY_1", "not enough memory while " + during, std::move(at))
-        .withNote("use a coarser mesh or a machine with more memory");
+    return msg::make("MEMORY_1.2", {{"during", during}}, std::move(at));
   }
-  Diagnostic d = Diagnostic::fatal("INTERNAL_2", "internal error in stella while " + during + ": " + e.what(),
-                                   std::move(at));
+  Diagnostic d = msg::make("INTERNAL_2", {{"during", during}, {"what", e.what()}}, std::move(at));
   d.kind = FailureKind::Abort;
-  d.withNote("this is a bug in stella, not in your study: please report it with the command file");
+  d.withNote(msg::text("INTERNAL_2.n1"));
   return d;
 }
 

@@ -3,6 +3,7 @@
 #include "interpreter/Diagnostics.hpp"
 #include "interpreter/SequenceObject.hpp"
 #include "interpreter/Suggest.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/MeshConcept.hpp"
 #include "solver/mesh/MeshEdges.hpp"
 
@@ -15,9 +16,7 @@ namespace {
 const Mesh& meshOf(const Concept& object, const char* method) {
   const auto* data = dynamic_cast<const MeshConcept*>(object.data.get());
   if (data == nullptr || data->mesh == nullptr) {
-    throw UserError(
-        Diagnostic::fatal("CONCEPT_3", fmt::format("{}.{}() needs the mesh's contents", object.name, method))
-            .withNote("`stella check` does not read meshes: run the study to call mesh methods"));
+    throw UserError(msg::make("CONCEPT_3", {{"name", object.name}, {"method", method}}));
   }
   return *data->mesh;
 }
@@ -25,8 +24,8 @@ const Mesh& meshOf(const Concept& object, const char* method) {
 void checkArity(const Concept& object, const char* method, const CallArguments& args, std::size_t most) {
   const std::size_t given = args.positional.size() + args.keywords.size();
   if (given > most) {
-    throw UserError(Diagnostic::fatal("LANG_ARGS", fmt::format("{}.{}() takes {} argument(s), {} given",
-                                                               object.name, method, most, given)));
+    throw UserError(msg::make("LANG_ARGS.2",
+                              {{"name", object.name}, {"method", method}, {"most", most}, {"given", given}}));
   }
 }
 
@@ -37,16 +36,13 @@ void checkLocal(const Concept& object, const char* method, const CallArguments& 
   for (const auto& k : args.keywords) {
     if (k.name != "local") {
       throw UserError(
-          Diagnostic::fatal("LANG_ARGS", fmt::format("{}.{}() got an unexpected keyword argument '{}'",
-                                                     object.name, method, k.name))
-              .withNote("its only argument is local=True/False"));
+          msg::make("LANG_ARGS.3", {{"name", object.name}, {"method", method}, {"name_2", k.name}}));
     }
     local = k.value.get();
   }
   if (local != nullptr && !local->isBool()) {
-    throw UserError(
-        Diagnostic::fatal("LANG_TYPE", fmt::format("{}.{}(local=...) expects True or False, found '{}'",
-                                                   object.name, method, local->typeName())));
+    throw UserError(msg::make("LANG_TYPE",
+                              {{"name", object.name}, {"method", method}, {"type_name", local->typeName()}}));
   }
 }
 
@@ -93,7 +89,7 @@ public:
     std::vector<double> values = values_;
     return std::make_shared<const Value>(makeNativeFunction("getValues", [values](const CallArguments& a) {
       if (!a.positional.empty() || !a.keywords.empty()) {
-        throw UserError(Diagnostic::fatal("LANG_ARGS", "getValues() takes no arguments"));
+        throw UserError(msg::make("LANG_ARGS.4"));
       }
       ValueList list;
       list.reserve(values.size());
@@ -117,10 +113,7 @@ Value getCoordinates(const Concept& object, const CallArguments& args) {
 // code_aster: getMinMaxEdgeSizes(group of cells) -> (shortest, longest) edge.
 Value getMinMaxEdgeSizes(const Concept& object, const CallArguments& args) {
   if (args.positional.size() != 1 || !args.keywords.empty() || !args.positional[0].isString()) {
-    throw UserError(Diagnostic::fatal(
-                        "LANG_ARGS", fmt::format("{}.getMinMaxEdgeSizes() takes the name of a group of cells",
-                                                 object.name))
-                        .withNote(fmt::format("e.g. {}.getMinMaxEdgeSizes('VOLUME')", object.name)));
+    throw UserError(msg::make("LANG_ARGS.5", {{"name", object.name}}));
   }
   const Mesh& mesh = meshOf(object, "getMinMaxEdgeSizes");
   const std::string& group = args.positional[0].asString();
@@ -130,8 +123,7 @@ Value getMinMaxEdgeSizes(const Concept& object, const CallArguments& args) {
     for (const auto& [name, members] : mesh.cellGroups()) {
       names.push_back(name);
     }
-    Diagnostic d = Diagnostic::fatal(
-        "GROUP_1", fmt::format("the mesh {} has no cell group (GROUP_MA) '{}'", object.name, group));
+    Diagnostic d = msg::make("GROUP_1.3", {{"name", object.name}, {"group", group}});
     const std::string note = names.empty() ? "the mesh has no cell group" : suggestionNote(group, names);
     if (!note.empty()) {
       d.withNote(note);
@@ -139,8 +131,7 @@ Value getMinMaxEdgeSizes(const Concept& object, const CallArguments& args) {
     throw UserError(std::move(d));
   }
   if (cells->empty()) {
-    throw UserError(Diagnostic::fatal(
-        "GROUP_1", fmt::format("the cell group '{}' of {} is empty: it has no edge", group, object.name)));
+    throw UserError(msg::make("GROUP_1.4", {{"group", group}, {"name", object.name}}));
   }
   const auto [shortest, longest] = minMaxEdgeLengths(mesh, *cells);
   return Value::tuple({Value(shortest), Value(longest)});

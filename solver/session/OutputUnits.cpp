@@ -3,6 +3,7 @@
 #include "Session.hpp"
 
 #include "catalog/KeywordTree.hpp"
+#include "messages/Messages.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
@@ -41,19 +42,16 @@ void Session::checkOutputUnit(const std::string& command, const KeywordTree& kw,
     at = call;
   }
   if (unit < 1 || unit > 99) {
-    throw UserError(Diagnostic::fatal("UNIT_2", fmt::format("UNITE={} is not a unit number", unit), at)
-                        .withNote("units go from 1 to 99; 8 is the result file, 80 the MED result"));
+    throw UserError(msg::make("UNIT_2", {{"unit", unit}}, at));
   }
   const std::string format = writtenFormat(command, kw);
   if ((unit == 6 || unit == 8) && format != "text") {
-    throw UserError(
-        Diagnostic::fatal("UNIT_3",
-                          fmt::format("{} {} to unit {}: unit {} is the {}, which holds text only", command,
-                                      describe(format), unit, unit,
-                                      unit == 6 ? "message file" : "text result file"),
-                          at)
-            .withNote(fmt::format("write {} to a unit of its own (UNITE=80 for MED), declared in the export",
-                                  describe(format))));
+    throw UserError(msg::make("UNIT_3",
+                              {{"command", command},
+                               {"describe", describe(format)},
+                               {"unit", unit},
+                               {"unit_2", unit == 6 ? "message file" : "text result file"}},
+                              at));
   }
   const bool declared = unit == 6 || unit == 8 || units_.count(unit) > 0 ||
                         std::find(resultUnits_.begin(), resultUnits_.end(), unit) != resultUnits_.end();
@@ -62,26 +60,17 @@ void Session::checkOutputUnit(const std::string& command, const KeywordTree& kw,
     for (int u : resultUnits_) {
       known += (known.empty() ? "" : ", ") + std::to_string(u);
     }
-    throw UserError(
-        Diagnostic::fatal(
-            "UNIT_2",
-            fmt::format("{} writes to unit {}, which the run does not declare: its file would be lost",
-                        command, unit),
-            at)
-            .withNote("result units of this run: " + known)
-            .withNote(fmt::format(
-                "declare it in the export (F rmed result.rmed R {}) or write to a declared unit", unit)));
+    throw UserError(msg::make("UNIT_2.2", {{"command", command}, {"unit", unit}, {"known", known}}, at));
   }
   auto [it, first] = unitFormats_.emplace(unit, std::make_pair(format, at));
   if (!first && it->second.first != format) {
-    throw UserError(
-        Diagnostic::fatal(
-            "UNIT_3",
-            fmt::format("{} {} to unit {}, which already receives {} (at {}): one format per unit "
-                        "per run",
-                        command, describe(format), unit, describe(it->second.first), it->second.second.str()),
-            at)
-            .withNote("two writers in one file leave it corrupt; give each format its own unit"));
+    throw UserError(msg::make("UNIT_3.2",
+                              {{"command", command},
+                               {"describe", describe(format)},
+                               {"unit", unit},
+                               {"describe_2", describe(it->second.first)},
+                               {"second", it->second.second.str()}},
+                              at));
   }
 }
 

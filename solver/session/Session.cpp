@@ -5,6 +5,7 @@
 #include "catalog/Catalog.hpp"
 #include "catalog/CommandSpec.hpp"
 #include "interpreter/Suggest.hpp"
+#include "messages/Messages.hpp"
 #include "solver/database/Result.hpp"
 #include "solver/functions/RealFunction.hpp"
 #include "solver/io/ResultWriters.hpp"
@@ -30,34 +31,37 @@ double callRealFunction(const RealFunction& function, const std::string& name, c
   const std::vector<std::string> parameters = function.parameters();
   std::vector<std::optional<double>> values(parameters.size());
   auto fail = [&](const std::string& message) {
-    return UserError(Diagnostic::fatal("FUNCTION_11", name + ": " + message, args.callLocation)
-                         .withNote("the parameters of " + name + " are " +
-                                   fmt::format("{}", fmt::join(parameters, ", "))));
+    return UserError(msg::make("FUNCTION_11",
+                               {{"name", name}, {"message", message}, {"join", fmt::join(parameters, ", ")}},
+                               args.callLocation));
   };
   if (args.positional.size() > parameters.size()) {
-    throw fail(fmt::format("takes {} parameter(s), {} given", parameters.size(), args.positional.size()));
+    throw fail(
+        msg::text("FUNCTION_11.count", {{"count", parameters.size()}, {"given", args.positional.size()}}));
   }
   for (std::size_t i = 0; i < args.positional.size(); ++i) {
     if (!args.positional[i].isNumber()) {
-      throw fail("the value of " + parameters[i] + " must be a number, got " + args.positional[i].typeName());
+      throw fail(msg::text("FUNCTION_11.type",
+                           {{"parameter", parameters[i]}, {"type", args.positional[i].typeName()}}));
     }
     values[i] = args.positional[i].asReal();
   }
   for (const KeywordArgument& k : args.keywords) {
     const auto it = std::find(parameters.begin(), parameters.end(), k.name);
     if (it == parameters.end()) {
-      throw fail("has no parameter " + k.name);
+      throw fail(msg::text("FUNCTION_11.unknown", {{"parameter", k.name}}));
     }
     auto& slot = values[static_cast<std::size_t>(it - parameters.begin())];
     if (slot || !k.value->isNumber()) {
-      throw fail(slot ? k.name + " given twice" : "the value of " + k.name + " must be a number");
+      throw fail(slot ? msg::text("FUNCTION_11.twice", {{"parameter", k.name}})
+                      : msg::text("FUNCTION_11.number", {{"parameter", k.name}}));
     }
     slot = k.value->asReal();
   }
   std::vector<double> given;
   for (std::size_t i = 0; i < values.size(); ++i) {
     if (!values[i]) {
-      throw fail("no value given for " + parameters[i]);
+      throw fail(msg::text("FUNCTION_11.missing", {{"parameter", parameters[i]}}));
     }
     given.push_back(*values[i]);
   }
@@ -121,7 +125,7 @@ UserError withCallingCommand(const UserError& e, const std::string& command, con
     const bool inCall =
         d.location.file == call.file && d.location.line >= call.line && d.location.line <= lastLine;
     if (call.known() && !inCall) {
-      d.withNote("while running " + command + " at " + call.str());
+      d.withNote(msg::text("NOTE.n3", {{"command", command}, {"call", call.str()}}));
     }
   }
   return UserError(std::move(ds));
@@ -181,12 +185,10 @@ std::filesystem::path Session::unitPath(int unit, const SourceLocation& at, bool
       for (const auto& [u, p] : units_) {
         declared += (declared.empty() ? "" : ", ") + std::to_string(u) + " (" + p.filename().string() + ")";
       }
-      throw UserError(
-          Diagnostic::fatal("UNIT_1", fmt::format("unit {} has no file to read", unit), at)
-              .withNote(declared.empty() ? "no data unit is declared" : "declared units: " + declared)
-              .withNote(fmt::format("declare it in the export (F mmed mesh.med D {}) or with "
-                                    "`stella run FILE.comm --unit {}=FILE`",
-                                    unit, unit)));
+      throw UserError(msg::make("UNIT_1", {{"unit", unit}}, at)
+                          .withNote(declared.empty() ? msg::text("UNIT_1.n2")
+                                                     : msg::text("UNIT_1.n3", {{"declared", declared}}))
+                          .withNote(msg::text("UNIT_1.n1", {{"unit", unit}})));
     }
   }
   opened_.push_back(unit);
@@ -243,8 +245,7 @@ Value Session::callCommandOnce(const std::string& command, const CallArguments& 
   if (op == nullptr) {
     // The catalogue marks the command non_implemente= (a unit test holds the two in step).
     const CommandSpec* spec = catalog_.find(command);
-    Diagnostic d = Diagnostic::fatal("COMMAND_1", "the command " + command + " is not implemented yet",
-                                     args.callLocation);
+    Diagnostic d = msg::make("COMMAND_1", {{"command", command}}, args.callLocation);
     if (spec != nullptr && spec->notImplemented && !spec->notImplemented->empty()) {
       d.withNote(*spec->notImplemented);
     }
@@ -322,13 +323,12 @@ Value Session::runOperator(Value (*op)(OperatorCall&), OperatorCall& opCall) {
   } catch (const UserError& e) {
     throw keepPartialResult(withUserPaths(e));
   } catch (const InternalError& e) {
-    throw keepPartialResult(
-        UserError(Diagnostic::fatal("INTERNAL_1", "internal error in stella while running " + command, at)
-                      .withNote(e.what())
-                      .withNote("this is a bug in stella, not in your study: please report it with the "
-                                "command file")));
+    throw keepPartialResult(UserError(msg::make("INTERNAL_1", {{"command", command}}, at)
+                                          .withNote(e.what())
+                                          .withNote(msg::text("INTERNAL_1.n1"))));
   } catch (const std::exception& e) {
-    throw keepPartialResult(UserError(diagnosticOf(e, "running " + command, at)));
+    throw keepPartialResult(
+        UserError(diagnosticOf(e, msg::text("DURING.command", {{"command", command}}), at)));
   }
 }
 
@@ -358,8 +358,9 @@ UserError Session::keepPartialResult(const UserError& e) {
     std::filesystem::remove(work, ec);
     const auto* user = dynamic_cast<const UserError*>(&failure);
     std::vector<Diagnostic> ds = e.diagnostics();
-    ds.front().withNote(fmt::format("the steps of {} could not be written to a MED file: {}", made->name,
-                                    user != nullptr ? user->diagnostics().front().message : failure.what()));
+    ds.front().withNote(msg::text(
+        "NOTE.n2", {{"name", made->name},
+                    {"reason", user != nullptr ? user->diagnostics().front().message : failure.what()}}));
     return UserError(std::move(ds));
   }
   const ResultStep& last = result->steps.back();
@@ -371,10 +372,11 @@ UserError Session::keepPartialResult(const UserError& e) {
     if (d.kind == FailureKind::Interrupted) {
       d.message += ", written to " + written;
     } else {
-      d.withNote(
-          fmt::format("the {} step(s) of {} computed before the error (up to INST {:g}, NUME_ORDRE {}) "
-                      "are written to {} (MED, copied back with the result files)",
-                      result->steps.size(), made->name, last.time, last.number, written));
+      d.withNote(msg::text("NOTE.n1", {{"steps_count", result->steps.size()},
+                                       {"name", made->name},
+                                       {"time", last.time},
+                                       {"number", last.number},
+                                       {"written", written}}));
     }
     break;
   }
@@ -397,14 +399,12 @@ Value Session::conceptAttribute(const std::shared_ptr<Concept>& object, const st
                               [method, object](const CallArguments& args) { return method(*object, args); });
   }
   const std::vector<std::string> methods = conceptMethodNames(object->type);
-  Diagnostic d = Diagnostic::fatal(
-      "CONCEPT_1", "the concept " + object->name + " (" + object->type + ") has no attribute '" + name + "'",
-      at);
+  Diagnostic d =
+      msg::make("CONCEPT_1", {{"name", object->name}, {"type", object->type}, {"name_2", name}}, at);
   if (const std::string suggestion = suggestionNote(name, methods); !suggestion.empty()) {
     d.withNote(suggestion);
   }
-  d.withNote(fmt::format("the methods of a {} are {}; others (EXTR_TABLE...) are not implemented yet",
-                         object->type, fmt::join(methods, ", ")));
+  d.withNote(msg::text("CONCEPT_1.n1", {{"type", object->type}, {"join", fmt::join(methods, ", ")}}));
   throw UserError(std::move(d));
 }
 

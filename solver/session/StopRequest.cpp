@@ -1,4 +1,5 @@
 #include "StopRequest.hpp"
+#include "messages/Messages.hpp"
 
 #include <atomic>
 #include <csignal>
@@ -119,13 +120,10 @@ void clearStopRequest() {
 }
 
 Diagnostic stopDiagnostic(const std::string& where, SourceLocation at) {
-  Diagnostic d =
-      Diagnostic::fatal("STOP_1", fmt::format("interrupted by {} {}", stopCause(), where), std::move(at));
+  Diagnostic d = msg::make("STOP_1", {{"stop_cause", stopCause()}, {"where", where}}, std::move(at));
   d.severity = Severity::Exception; // <S>, as code_aster's stops on the time limit
   d.kind = FailureKind::Interrupted;
-  d.withNote(stopReason() == StopReason::TimeLimit
-                 ? "raise P time_limit in the export, or continue from the steps kept (ETAT_INIT)"
-                 : "the run stopped at a safe point; send the signal twice to stop at once");
+  d.withNote(stopReason() == StopReason::TimeLimit ? msg::text("STOP_1.n1") : msg::text("STOP_1.n2"));
   return d;
 }
 

@@ -4,6 +4,7 @@
 #include "Commands.hpp"
 #include "catalog/Catalog.hpp"
 #include "interpreter/Interpreter.hpp"
+#include "messages/Messages.hpp"
 #include "solver/job/Export.hpp"
 #include "solver/session/Session.hpp"
 
@@ -66,7 +67,7 @@ std::vector<std::string> declareUnits(const CheckArguments& args, Session& sessi
       unit = 0;
     }
     if (unit < 1 || unit > 99) {
-      throw UserError(Diagnostic::fatal("CLI_1", "--unit " + u + ": expected N or N=FILE with 1 <= N <= 99"));
+      throw UserError(msg::make("CLI_1", {{"u", u}}));
     }
     if (equal == std::string::npos) {
       session.declareResultUnit(unit);

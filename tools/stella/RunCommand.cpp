@@ -1,6 +1,7 @@
 // `stella run`: a batch run from a .export, or a quick run of a .comm with --unit options.
 
 #include "Commands.hpp"
+#include "messages/Messages.hpp"
 #include "solver/job/BatchJob.hpp"
 #include "solver/job/Confine.hpp"
 #include "solver/nonlinear/ProgressLine.hpp"
@@ -100,7 +101,7 @@ int run(const RunArguments& args) {
     return exitInput;
   } catch (const std::exception& e) {
     // Before the message file exists (the work directory cannot be made...): standard error.
-    const Diagnostic d = diagnosticOf(e, "preparing the run");
+    const Diagnostic d = diagnosticOf(e, msg::text("DURING.prepare"));
     std::cerr << formatDiagnostic(d);
     return exitCode(d.kind == FailureKind::Abort ? JobDiagnostic::AbnormalAbort : JobDiagnostic::Error);
   }

@@ -3,6 +3,7 @@
 
 #include "solver/contact/lac/LacContactConstraint.hpp"
 
+#include "messages/Messages.hpp"
 #include "solver/contact/ContactResultField.hpp"
 #include "solver/contact/ContactRows.hpp"
 #include "solver/contact/mortar/ContElemField.hpp"
@@ -20,8 +21,8 @@ namespace stella::contact::lac {
 
 namespace {
 
-[[noreturn]] void refuseMesh(const std::string& what, const SourceLocation& at, const std::string& note) {
-  throw UserError(Diagnostic::fatal("CONTACT_LAC_1", what, at).withNote(note));
+[[noreturn]] void refuseMesh(std::string_view key, msg::Args args, const SourceLocation& at) {
+  throw UserError(msg::make(key, args, at));
 }
 
 // The node of a patch carrying its LAGS_C: the node shared by the most of its cells, the first in
@@ -81,10 +82,7 @@ LacContactConstraint::LacContactConstraint(std::shared_ptr<const ContactDefiniti
     const auto* slaveCells = mesh.cellGroup(zone.slaveGroup);
     STELLA_ASSERT(slaveCells != nullptr, "LAC slave group checked by DEFI_CONTACT");
     if (patchOf.empty()) {
-      refuseMesh(fmt::format("ALGO_CONT='LAC': the slave group '{}' carries no LAC patch", zone.slaveGroup),
-                 zone.location,
-                 "cut the mesh with CREA_MAILLAGE(DECOUPE_LAC=_F(GROUP_MA_ESCL='" + zone.slaveGroup +
-                     "')) and build the model on the cut mesh (notice §3.1.4)");
+      refuseMesh("CONTACT_LAC_1", {{"slave_group", zone.slaveGroup}}, zone.location);
     }
     const std::vector<CellId> slaves(slaveCells->begin(), slaveCells->end());
     const auto bounded = boundedVolumes(mesh, slaves, {});
@@ -96,23 +94,21 @@ LacContactConstraint::LacContactConstraint(std::shared_ptr<const ContactDefiniti
                                 : t == CellType::TRIA3 || t == CellType::TRIA6 || t == CellType::QUAD4 ||
                                       t == CellType::QUAD8 || t == CellType::QUAD9;
       if (!known) {
-        refuseMesh(
-            fmt::format("ALGO_CONT='LAC': slave cell {} of '{}' is a {}; LAC takes SEG2 and SEG3 slave "
-                        "cells in 2D, TRIA3, TRIA6, QUAD4, QUAD8 and QUAD9 in 3D",
-                        mesh.cellName(c), zone.slaveGroup, name(t)),
-            zone.location, "give the boundary edges (2D) or faces (3D) of the slave body in GROUP_MA_ESCL");
+        refuseMesh("CONTACT_LAC_1.2",
+                   {{"cell_name", mesh.cellName(c)}, {"slave_group", zone.slaveGroup}, {"name", name(t)}},
+                   zone.location);
       }
       const auto found = patchOf.find(c);
       if (found == patchOf.end()) {
-        refuseMesh(fmt::format("ALGO_CONT='LAC': slave cell {} of '{}' belongs to no LAC patch",
-                               mesh.cellName(c), zone.slaveGroup),
-                   zone.location, "cut the mesh with CREA_MAILLAGE/DECOUPE_LAC on this group");
+        refuseMesh("CONTACT_LAC_1.3", {{"cell_name", mesh.cellName(c)}, {"slave_group", zone.slaveGroup}},
+                   zone.location);
       }
       if (bounded[i].size() != 1) {
-        refuseMesh(fmt::format("ALGO_CONT='LAC': slave cell {} of '{}' bounds {} cells of the model (one "
-                               "expected: the slave surface is a boundary)",
-                               mesh.cellName(c), zone.slaveGroup, bounded[i].size()),
-                   zone.location, "give the boundary edges of the slave body in GROUP_MA_ESCL");
+        refuseMesh("CONTACT_LAC_1.4",
+                   {{"cell_name", mesh.cellName(c)},
+                    {"slave_group", zone.slaveGroup},
+                    {"bounded_count", bounded[i].size()}},
+                   zone.location);
       }
       cells.slaves.push_back({c, found->second, bounded[i].front().outward ? 1.0 : -1.0});
     }
@@ -319,15 +315,12 @@ void LacContactConstraint::redundant(std::size_t patch, bool slip) const {
   const Mesh& mesh = *definition_->mesh;
   const auto& cells = mesh.lacPatches()[patch].cells;
   const int zone = patchZone_[patch];
-  throw UserError(
-      Diagnostic::fatal("CONTACT_11",
-                        fmt::format("the contact conditions are redundant at INST {}: the mean {} of the LAC "
-                                    "patch of slave cell {} (zone {}) cannot move independently of the "
-                                    "other patches in contact",
-                                    time_, slip ? "slip" : "gap", mesh.cellName(cells.front()), zone + 1),
-                        definition_->zones[static_cast<std::size_t>(zone)].location)
-          .withNote("a patch whose nodes are all held by DDL_IMPO in the normal direction, or two zones "
-                    "constraining the same surface, make the conditions redundant"));
+  throw UserError(msg::make("CONTACT_11.4",
+                            {{"time", time_},
+                             {"slip", slip ? "slip" : "gap"},
+                             {"cell_name", mesh.cellName(cells.front())},
+                             {"zone", zone + 1}},
+                            definition_->zones[static_cast<std::size_t>(zone)].location));
 }
 
 bool LacContactConstraint::statusSettled(const Eigen::VectorXd& u) {
@@ -353,13 +346,8 @@ bool LacContactConstraint::statusSettled(const Eigen::VectorXd& u) {
                   : c.iterationsPerNode ? c.statusIterationFactor * patches
                                         : c.maxStatusIterations;
   if (statusIterations_ > cap) {
-    throw UserError(
-        Diagnostic::noConvergence("CONTACT_26",
-                                  fmt::format("the contact status loop did not converge at INST {}: after {} "
-                                              "status iterations {} LAC patch(es) still change status",
-                                              time_, cap, changed),
-                                  definition_->location)
-            .withNote("refine the list of instants"));
+    throw UserError(msg::make("CONTACT_26.3", {{"time", time_}, {"cap", cap}, {"changed", changed}},
+                              definition_->location));
   }
   continuation_ = fmt::format("contact status changed on {} LAC patch(es): Newton iterations go on", changed);
   return false;
@@ -380,15 +368,12 @@ bool LacContactConstraint::geometrySettled(const Eigen::VectorXd& u) {
   if (s.continuous.geometryNewton || s.geometricUpdate == GeometricUpdate::Automatic) {
     again = geometricResidual(u) > s.geometricResidual;
     if (again && !s.continuous.geometryNewton && geometricIterations_ >= s.maxGeometricIterations) {
-      throw UserError(
-          Diagnostic::noConvergence(
-              "CONTACT_GEOM_1",
-              fmt::format(
-                  "the geometric loop of LAC contact did not converge at INST {} in ITER_GEOM_MAXI = {} "
-                  "pairings (residual {:.3e} > RESI_GEOM = {})",
-                  time_, s.maxGeometricIterations, geometricResidual(u), s.geometricResidual),
-              definition_->location)
-              .withNote("raise ITER_GEOM_MAXI, refine the list of instants, or use ALGO_RESO_GEOM='NEWTON'"));
+      throw UserError(msg::make("CONTACT_GEOM_1.2",
+                                {{"time", time_},
+                                 {"max_geometric_iterations", s.maxGeometricIterations},
+                                 {"geometric_residual", geometricResidual(u)},
+                                 {"geometric_residual_2", s.geometricResidual}},
+                                definition_->location));
     }
   } else if (s.geometricUpdate == GeometricUpdate::Controlled) {
     again = geometricIterations_ < s.geometricIterations;

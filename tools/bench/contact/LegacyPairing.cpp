@@ -4,6 +4,7 @@
 
 #include "tools/bench/contact/LegacyPairing.hpp"
 
+#include "messages/Messages.hpp"
 #include "solver/fem/ReferenceElement.hpp"
 #include "solver/mesh/MeshGeometry.hpp"
 #include "tools/bench/contact/PointSearchTree.hpp"
@@ -221,9 +222,7 @@ static std::array<double, 2> projectOnCell(const Mesh& mesh, const NodePosition&
 std::vector<ContactLink> pairZone(const Mesh& mesh, const NodePosition& position, int zoneIndex,
                                   const ContactZone& zone, const PairingOptions& options) {
   if (zone.projection == Projection::Fixed) {
-    throw UserError(
-        Diagnostic::fatal("CONTACT_10", "TYPE_PROJECTION='FIXE' is not implemented yet", zone.location)
-            .withNote("use TYPE_PROJECTION='ORTHOGONALE' (the default)"));
+    throw UserError(msg::make("CONTACT_10", {}, zone.location));
   }
   const int dim = options.dimension - 1;
   const Surface master = buildSurface(mesh, position, zoneMasterCells(mesh, zone), dim);
