@@ -74,9 +74,9 @@ std::optional<ContactAlgorithm> resolvedAlgorithm(const ContactDefinition& def) 
       continue;
     }
     if (algorithm && *algorithm != z.algorithm) {
-      notImplemented(fmt::format("zones with different ALGO_CONT ({} and {})",
-                                 contact::algorithmName(*algorithm), contact::algorithmName(z.algorithm)),
-                     z.location, "give every zone of the discrete formulation the same ALGO_CONT");
+      notImplemented(msg::text("CONTACT_20.mixed_algo", {{"first", contact::algorithmName(*algorithm)},
+                                                         {"second", contact::algorithmName(z.algorithm)}}),
+                     z.location, msg::text("CONTACT_20.mixed_algo_n"));
     }
     algorithm = z.algorithm;
   }
@@ -85,30 +85,27 @@ std::optional<ContactAlgorithm> resolvedAlgorithm(const ContactDefinition& def) 
 
 void refuse(const std::vector<contact::Unimplemented>& refused) {
   if (!refused.empty()) {
-    notImplemented(fmt::format("{} with FORMULATION='CONTINUE'", refused.front().what),
-                   refused.front().location,
-                   "remove the keyword or give its default value; see doc/contact.md, \"Continuous "
-                   "formulation\", for what is implemented");
+    notImplemented(msg::text("CONTACT_20.continue_kw", {{"what", refused.front().what}}),
+                   refused.front().location, msg::text("CONTACT_20.continue_kw_n"));
   }
 }
 
 // FROTTEMENT='COULOMB' with ALGO_CONT='LAC' (lac/LacFriction.cpp): 2D and 3D, ALGO_FROT='STANDARD',
 // ALGO_RESO_FROT='NEWTON', no SEUIL_INIT nor SANS_GROUP_NO_FR.
 void refuseLacFriction(const ContactDefinition& def) {
-  const std::string note = "LAC friction (beyond code_aster) is implemented with ALGO_FROT='STANDARD' and "
-                           "ALGO_RESO_FROT='NEWTON'; use ALGO_CONT='STANDARD' for the rest";
+  const std::string note = msg::text("CONTACT_20.lac_friction_n");
   if (def.settings.continuous.frictionFixedPoint) {
-    notImplemented("ALGO_RESO_FROT='POINT_FIXE' with ALGO_CONT='LAC'", def.settings.frictionAt, note);
+    notImplemented(msg::text("CONTACT_20.lac_frot_pf"), def.settings.frictionAt, note);
   }
   for (const auto& z : def.zones) {
     if (z.continuous.frictionPenalised) {
-      notImplemented("ALGO_FROT='PENALISATION' with ALGO_CONT='LAC'", z.location, note);
+      notImplemented(msg::text("CONTACT_20.lac_frot_pena"), z.location, note);
     }
     if (z.continuous.initialThreshold) {
-      notImplemented("SEUIL_INIT with ALGO_CONT='LAC'", z.location, note);
+      notImplemented(msg::text("CONTACT_20.lac_seuil"), z.location, note);
     }
     if (!z.continuous.frictionExcludedGroups.empty()) {
-      notImplemented("SANS_GROUP_NO_FR with ALGO_CONT='LAC'", z.continuous.frictionExcludedAt, note);
+      notImplemented(msg::text("CONTACT_20.lac_sans_fr"), z.continuous.frictionExcludedAt, note);
     }
   }
 }
@@ -121,9 +118,8 @@ std::unique_ptr<StepConstraint> makeLac(std::shared_ptr<const ContactDefinition>
   refuse(def->settings.continuous.refused);
   for (const auto& z : def->zones) {
     if (z.algorithm != ContactAlgorithm::Lac) {
-      notImplemented(fmt::format("a zone with ALGO_CONT='{}' beside zones with ALGO_CONT='LAC'",
-                                 contact::algorithmName(z.algorithm)),
-                     z.location, "give every zone ALGO_CONT='LAC', or none");
+      notImplemented(msg::text("CONTACT_20.lac_mixed", {{"algo", contact::algorithmName(z.algorithm)}}),
+                     z.location, msg::text("CONTACT_20.lac_mixed_n"));
     }
   }
   if (def->hasFriction()) {
@@ -131,12 +127,11 @@ std::unique_ptr<StepConstraint> makeLac(std::shared_ptr<const ContactDefinition>
   }
   const fem::Modelling modelling = system.model().modelling;
   if (def->settings.smoothing && modelling == fem::Modelling::ThreeD) {
-    notImplemented("LISSAGE='OUI' with ALGO_CONT='LAC' in 3D", def->location,
-                   "LAC in 3D uses the normals of the slave faces; remove LISSAGE (it is implemented in 2D)");
+    notImplemented(msg::text("CONTACT_20.lac_lissage_3d"), def->location,
+                   msg::text("CONTACT_20.lac_lissage_3d_n"));
   }
   if (policy) {
-    notImplemented("DEFI_LIST_INST EVENEMENT='INTERPENETRATION' with ALGO_CONT='LAC'", at,
-                   "remove the INTERPENETRATION event");
+    notImplemented(msg::text("CONTACT_20.lac_interpen"), at, msg::text("CONTACT_20.lac_interpen_n"));
   }
   return std::make_unique<contact::lac::LacContactConstraint>(std::move(def), system.dofs(), modelling);
 }
@@ -144,12 +139,9 @@ std::unique_ptr<StepConstraint> makeLac(std::shared_ptr<const ContactDefinition>
 // INTEGRATION with contact points off the slave nodes (GAUSS, SIMPSON, NCOTES; AUTO on TRIA6/QUAD8):
 // the master's normal only (friction, SEUIL_INIT, GLISSIERE, SANS_GROUP_NO_FR as at the nodes).
 void refuseAtPoints(const ContactDefinition& def) {
-  const std::string note =
-      "contact points off the slave nodes (ContinuousPointContact) are implemented with "
-      "NORMALE='MAIT', VECT_MAIT=VECT_ESCL='AUTO' and LISSAGE='NON'; use INTEGRATION='AUTO' on "
-      "TRIA3, QUAD4, QUAD9 (SEG2, SEG3) slave cells for the rest";
+  const std::string note = msg::text("CONTACT_20.points_n");
   if (def.settings.smoothing) {
-    notImplemented("LISSAGE='OUI' with INTEGRATION other than 'AUTO' on linear cells", def.location, note);
+    notImplemented(msg::text("CONTACT_20.points_lissage"), def.location, note);
   }
   for (const auto& z : def.zones) {
     const SourceLocation& at = z.continuous.integration != contact::ContactIntegration::Auto
@@ -157,10 +149,7 @@ void refuseAtPoints(const ContactDefinition& def) {
                                    : z.location;
     if (z.normal != contact::NormalChoice::Master || z.masterVector != contact::VectorChoice::Auto ||
         z.slaveVector != contact::VectorChoice::Auto) {
-      notImplemented(
-          "NORMALE other than 'MAIT' (or VECT_MAIT/VECT_ESCL) with INTEGRATION other than 'AUTO' on "
-          "linear cells",
-          at, note);
+      notImplemented(msg::text("CONTACT_20.points_normale"), at, note);
     }
   }
 }
@@ -169,31 +158,23 @@ void refuseAtPoints(const ContactDefinition& def) {
 // with Coulomb friction on the pairing's tangents (ContinuousGeometricTangent.hpp).
 void refuseGeometryNewton(const ContactDefinition& def) {
   const SourceLocation& at = def.settings.continuous.geometryAt;
-  const std::string note = "use ALGO_RESO_GEOM='POINT_FIXE' (the geometric loop, REAC_GEOM)";
+  const std::string note = msg::text("CONTACT_20.geom_n");
   for (const auto& z : def.zones) {
     if (def.hasFriction() && z.continuous.excludedDirection && def.mesh->dimension() == 3) {
-      notImplemented("ALGO_RESO_GEOM='NEWTON' and DIRE_EXCL_FROT in 3D with FORMULATION='CONTINUE'",
-                     z.continuous.excludedDirectionAt,
-                     "the friction direction DIRE_EXCL_FROT leaves turns with the geometry and its variation "
-                     "is not in the tangent; " +
-                         note);
+      notImplemented(msg::text("CONTACT_20.geom_dire_excl"), z.continuous.excludedDirectionAt,
+                     msg::text("CONTACT_20.geom_dire_excl_n", {{"advice", note}}));
     }
   }
   if (def.settings.smoothing) {
-    notImplemented("ALGO_RESO_GEOM='NEWTON' and LISSAGE='OUI' with FORMULATION='CONTINUE'", at, note);
+    notImplemented(msg::text("CONTACT_20.geom_lissage"), at, note);
   }
   if (contact::needsContactPoints(def)) {
-    notImplemented("ALGO_RESO_GEOM='NEWTON' and contact points that are not slave nodes (INTEGRATION "
-                   "other than 'AUTO', or 'AUTO' on TRIA6 and QUAD8 slave cells) with FORMULATION='CONTINUE'",
-                   at, note);
+    notImplemented(msg::text("CONTACT_20.geom_points"), at, note);
   }
   for (const auto& z : def.zones) {
     if (z.normal != contact::NormalChoice::Master || z.masterVector != contact::VectorChoice::Auto ||
         z.slaveVector != contact::VectorChoice::Auto || z.pairing != contact::Pairing::MasterSlave) {
-      notImplemented("ALGO_RESO_GEOM='NEWTON' and NORMALE other than 'MAIT', VECT_MAIT, VECT_ESCL or "
-                     "APPARIEMENT other than 'MAIT_ESCL' with FORMULATION='CONTINUE' (the geometric tangent "
-                     "is that of the master's own normal)",
-                     z.location, note);
+      notImplemented(msg::text("CONTACT_20.geom_normale"), z.location, note);
     }
   }
 }
@@ -210,18 +191,14 @@ std::unique_ptr<contact::ContactConstraint> makeContinuous(std::shared_ptr<const
   for (const auto& z : def->zones) {
     refuse(z.continuous.refused);
     if (def->hasFriction() && z.algorithm == ContactAlgorithm::ContinuePenalty) {
-      notImplemented("FROTTEMENT='COULOMB' with ALGO_CONT='PENALISATION' and FORMULATION='CONTINUE'",
-                     z.location,
-                     "use ALGO_CONT='STANDARD' (COEF_CONT) with ALGO_FROT='STANDARD' or 'PENALISATION'");
+      notImplemented(msg::text("CONTACT_20.cont_pena_frot"), z.location,
+                     msg::text("CONTACT_20.cont_pena_frot_n"));
     }
   }
   if (policy && std::none_of(def->zones.begin(), def->zones.end(), [](const contact::ContactZone& z) {
         return z.resolve && z.algorithm == ContactAlgorithm::ContinuePenalty;
       })) {
-    notImplemented(
-        "DEFI_LIST_INST EVENEMENT='INTERPENETRATION' without a zone of ALGO_CONT='PENALISATION' (it "
-        "raises COEF_PENA_CONT; the augmented Lagrangian leaves no interpenetration)",
-        at, "use ALGO_CONT='PENALISATION', or remove the INTERPENETRATION event");
+    notImplemented(msg::text("CONTACT_20.cont_interpen"), at, msg::text("CONTACT_20.interpen_n"));
   }
   def = contact::adaptContinuousCoefficients(std::move(def), system.materials(),
                                              fem::spaceDimension(system.model().modelling));
@@ -245,8 +222,8 @@ std::unique_ptr<StepConstraint> makeContactConstraint(const ContactStepInputs& i
   const SourceLocation& at = inputs.at;
   const std::shared_ptr<const ContactDefinition>& def = inputs.definition;
   if (def->settings.formulation == contact::Formulation::LiaisonUnil) {
-    notImplemented("FORMULATION='LIAISON_UNIL'", def->location,
-                   "FORMULATION='DISCRETE' or 'CONTINUE' are available");
+    notImplemented(msg::text("CONTACT_20.liaison_unil"), def->location,
+                   msg::text("CONTACT_20.liaison_unil_n"));
   }
   checkAgainstSystem(*def, system, at);
   const std::optional<FailurePolicy>& policy = inputs.interpenetration;
@@ -268,21 +245,19 @@ std::unique_ptr<StepConstraint> makeContactConstraint(const ContactStepInputs& i
     c = std::make_unique<contact::PenaltyContactConstraint>(def, system.dofs(), policy);
   } else {
     if (def->hasFriction()) {
-      notImplemented(
-          fmt::format("FROTTEMENT='COULOMB' with ALGO_CONT='{}' (dual contact with penalised friction)",
-                      contact::algorithmName(*algorithm)),
-          def->location, "use ALGO_CONT='PENALISATION' with E_N for contact with friction");
+      notImplemented(msg::text("CONTACT_20.dual_frot", {{"algo", contact::algorithmName(*algorithm)}}),
+                     def->location, msg::text("CONTACT_20.dual_frot_n"));
     }
     if (*algorithm == ContactAlgorithm::Gcp && !def->settings.gcpTolerance) {
       throw UserError(msg::make("CONTACT_24", {}, def->location));
     }
     if (policy) {
       notImplemented(
-          fmt::format("DEFI_LIST_INST EVENEMENT='INTERPENETRATION' (ACTION='{}') with ALGO_CONT='{}' "
-                      "(it acts on ALGO_CONT='PENALISATION')",
-                      policy->action == FailurePolicy::Action::AdaptPenalty ? "ADAPT_COEF_PENA" : "ARRET",
-                      contact::algorithmName(*algorithm)),
-          at, "use ALGO_CONT='PENALISATION', or remove the INTERPENETRATION event");
+          msg::text("CONTACT_20.dual_interpen",
+                    {{"action",
+                      policy->action == FailurePolicy::Action::AdaptPenalty ? "ADAPT_COEF_PENA" : "ARRET"},
+                     {"algo", contact::algorithmName(*algorithm)}}),
+          at, msg::text("CONTACT_20.interpen_n"));
     }
     c = std::make_unique<contact::DualContactConstraint>(def, system.dofs(), *algorithm);
   }

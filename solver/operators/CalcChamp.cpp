@@ -272,11 +272,7 @@ void computeForces(ForceContext& ctx, ResultStep& step, const std::vector<std::s
   }
   const Field* depl = step.field("DEPL");
   if (ctx.strains != nullptr && (depl == nullptr || depl->support() != FieldSupport::Node)) {
-    throw UserError(Diagnostic::fatal(
-        "CALC_4",
-        fmt::format("result {} has no DEPL at NUME_ORDRE {}: the forces of its GROT_GDEP cells need it", name,
-                    step.number),
-        kw.locationOf("FORCE")));
+    throw UserError(msg::make("CALC_4.4", {{"name", name}, {"number", step.number}}, kw.locationOf("FORCE")));
   }
   Eigen::VectorXd forc = forcesFromStress(ctx.model, ctx.dofs, *sief, ctx.strains, depl);
   addSpringForces(ctx, step, name, kw, forc);

@@ -73,15 +73,10 @@ CellLaws cellLawsOf(const KeywordTree& kw, const Model& model, const MaterialFie
       }
       if (large && model.cell(c).kind == ElementKind::Volume &&
           model.cell(c).volumeStrain == fem::VolumeStrain::CellMean) {
-        throw UserError(
-            Diagnostic::fatal(
-                "SNL_13",
-                fmt::format("DEFORMATION='GROT_GDEP' on the mean-dilatation cell {} (MODELISATION "
-                            "'{}_SI') is not implemented yet",
-                            model.mesh->cellName(c), fem::modellingName(model.cell(c).modelling)),
-                occ.locationOf("DEFORMATION"))
-                .withNote("use the fully integrated modelisation (3D, D_PLAN, AXIS) with GROT_GDEP, or "
-                          "DEFORMATION='PETIT'"));
+        throw UserError(msg::make("SNL_13",
+                                  {{"cell_name", model.mesh->cellName(c)},
+                                   {"modelling", fem::modellingName(model.cell(c).modelling)}},
+                                  occ.locationOf("DEFORMATION")));
       }
     }
   }
