@@ -7,6 +7,7 @@
 #include "catalog/Catalog.hpp"
 #include "interpreter/Interpreter.hpp"
 #include "solver/linalg/BlasThreads.hpp"
+#include "solver/parallel/Mpi.hpp"
 #include "solver/session/ExceptionDiagnostic.hpp"
 #include "solver/session/MemoryLimit.hpp"
 #include "solver/session/Session.hpp"
@@ -83,6 +84,7 @@ void writeHeader(std::ostream& mess, const RunOptions& options, const fs::path& 
        << "   host          : " << hostName() << "\n"
        << "   command line  : " << options.commandLine << "\n"
        << "   work directory: " << work.string() << "\n"
+       << (mpi::built() ? fmt::format("   MPI processes: {}{}\n", mpi::size(), mpi::partitioningNote()) : "")
        << std::string(72, '=') << "\n";
 }
 
@@ -519,6 +521,10 @@ JobResult rescueCrashedRun(const JobSpec& spec, const RunOptions& options, const
 namespace {
 
 JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
+  if (mpi::underLauncher()) { // a process of mpirun -n N: MpiRun.cpp
+    const RunOptions own = rankOptions(options);
+    return runOnRanks(spec, own, makeWorkDirectory(own));
+  }
   fs::path work = makeWorkDirectory(options);
   return options.supervised ? runSupervised(spec, options, work) : runInWork(spec, options, work);
 }

@@ -4,6 +4,7 @@
 // "second signal stops at once" rule of StopRequest keeps its meaning.
 
 #include "JobSpec.hpp"
+#include "solver/parallel/Mpi.hpp"
 
 #include <cerrno>
 #include <csignal>
@@ -158,6 +159,7 @@ std::string readAll(int fd) {
   std::cout.flush();
   std::cerr.flush();
   std::fflush(nullptr);
+  mpi::finalise(); // MPI, when a MUMPS call of the run initialised it (a world of one)
   _exit(0);
 }
 

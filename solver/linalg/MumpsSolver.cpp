@@ -1,9 +1,14 @@
-// MUMPS backend (sequential library, double precision C interface).
+// MUMPS backend (double precision C interface): the sequential library, or the parallel one on
+// the MPI world of the run (solver/parallel/Mpi.hpp). On more than one process the matrix goes
+// to MUMPS distributed (ICNTL(18) = 3: each process gives its share of the entries, MUMPS sums
+// duplicates), the right-hand sides on the host (rank 0), the solution comes back centralised on
+// the host (ICNTL(21) = 0) and is broadcast to every process.
 
 #include "solver/linalg/Backends.hpp"
 #include "solver/linalg/MumpsControlsApply.hpp"
 #include "solver/linalg/MumpsCoordinates.hpp"
 #include "solver/linalg/MumpsFactorise.hpp"
+#include "solver/parallel/Mpi.hpp"
 
 #include <dmumps_c.h>
 
@@ -17,7 +22,6 @@ namespace stella::linalg::detail {
 namespace {
 
 constexpr int jobInit = -1, jobEnd = -2, jobAnalyse = 1, jobSolve = 3;
-constexpr int useCommWorld = -987654; // MUMPS's code for the (sequential) world communicator
 
 // RENUM -> ICNTL(7). Debian 12's sequential MUMPS has no METIS (it falls back to its automatic
 // choice: INFOG(7) tells), so the catalogue refuses RENUM='METIS' for MUMPS; PARMETIS and
@@ -60,7 +64,8 @@ public:
   MumpsSolver(const SolverOptions& o, MatrixKind k) : LinearSolver(k), options_(o) {
     const int ordering = orderingCode(o.renumbering); // before the instance exists: may throw
     id_ = {};
-    id_.comm_fortran = useCommWorld;
+    id_.comm_fortran = mpi::fortranWorld();
+    distributed_ = mpi::size() > 1;
     id_.par = 1;
     // SYM=2 (general symmetric) also for positive definite matrices: with SYM=1 the null-pivot
     // detection of ICNTL(24) let a floating structure through in our tests.
@@ -76,6 +81,7 @@ public:
     id_.icntl[2] = -1;
     id_.icntl[3] = 0;
     id_.icntl[6] = ordering;                                       // ICNTL(7)
+    id_.icntl[17] = distributed_ ? 3 : 0;                          // ICNTL(18): distributed entries
     id_.icntl[13] = static_cast<int>(std::lround(o.pivotPercent)); // ICNTL(14)
     // ICNTL(24): null pivot detection, with the relative threshold CNTL(3) = 10^-NPREC; a
     // negative NPREC turns it off (code_aster's convention): MUMPS then only fails on a pivot
@@ -107,13 +113,18 @@ public:
     const SparsePattern& p = a.pattern();
     mumpsCoordinates(p, irn_, jcn_);
     id_.n = p.size;
-    id_.nnz = p.nonZeros();
-    id_.irn = irn_.data();
-    id_.jcn = jcn_.data();
     // The values of this matrix, for the analysis's numerical preprocessing (weighted matching and
     // scaling, 2x2 pivots of the multipliers). Never the pointer of an earlier factorisation: a
     // re-analysis after a pattern change read that stale array (INFOG(1) = -6 on penalised contact).
-    id_.a = a.values().size() == irn_.size() ? const_cast<double*>(a.values().data()) : nullptr;
+    const bool withValues = a.values().size() == irn_.size();
+    if (distributed_) {
+      giveLocalEntries(withValues ? a.values().data() : nullptr);
+    } else {
+      id_.nnz = p.nonZeros();
+      id_.irn = irn_.data();
+      id_.jcn = jcn_.data();
+      id_.a = withValues ? const_cast<double*>(a.values().data()) : nullptr;
+    }
     id_.job = jobAnalyse;
     dmumps_c(&id_);
     check("analysis");
@@ -121,7 +132,11 @@ public:
   }
 
   void factorise(const SparseMatrix& a) override {
-    id_.a = const_cast<double*>(a.values().data()); // MUMPS does not modify A
+    if (distributed_) {
+      giveLocalEntries(a.values().data());
+    } else {
+      id_.a = const_cast<double*>(a.values().data()); // MUMPS does not modify A
+    }
     if (options_.nprec >= 0) {
       id_.cntl[2] = std::pow(10.0, -options_.nprec) / penaltyRatio_; // CNTL(3), see setPenaltyRatio
     }
@@ -132,7 +147,9 @@ public:
     check("factorisation");
     factorised_ = true;
     if (options_.stopIfSingular && id_.infog[27] > 0) { // INFOG(28): null pivots found
-      throw SingularMatrixError("MUMPS", id_.pivnul_list != nullptr ? id_.pivnul_list[0] - 1 : -1);
+      int equation = mpi::rank() == 0 && id_.pivnul_list != nullptr ? id_.pivnul_list[0] - 1 : -1;
+      mpi::broadcast(&equation, 1); // PIVNUL_LIST is on the host
+      throw SingularMatrixError("MUMPS", equation);
     }
   }
 
@@ -152,6 +169,7 @@ public:
     dmumps_c(&id_);
     check("solution");
     checkBackwardError();
+    mpi::broadcast(b.data(), b.size()); // the host's solution (ICNTL(21) = 0) to every process
     rhs = b;
   }
 
@@ -199,6 +217,7 @@ private:
     id_.irhs_sparse = nullptr;
     id_.irhs_ptr = nullptr;
     check("solution (sparse right-hand sides)");
+    mpi::broadcast(x.data(), x.size());
     rhs = x;
   }
 
@@ -226,7 +245,20 @@ private:
     }
   }
 
+  // ICNTL(18) = 3: this process's share of the entries, a contiguous slice of the pattern (every
+  // process holds the whole matrix: the assembly is replicated); `values` null: pattern only.
+  void giveLocalEntries(const double* values) {
+    const long long total = static_cast<long long>(irn_.size());
+    const long long first = total * mpi::rank() / mpi::size();
+    const long long last = total * (mpi::rank() + 1) / mpi::size();
+    id_.nnz_loc = last - first;
+    id_.irn_loc = irn_.data() + first;
+    id_.jcn_loc = jcn_.data() + first;
+    id_.a_loc = values != nullptr ? const_cast<double*>(values) + first : nullptr;
+  }
+
   SolverOptions options_;
+  bool distributed_ = false;
   DMUMPS_STRUC_C id_;
   bool initialised_ = false;
   bool factorised_ = false;
