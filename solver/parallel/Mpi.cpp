@@ -58,7 +58,9 @@ int launchedRank() {
 
 #ifdef STELLA_HAVE_MPI
 
-bool built() { return true; }
+bool built() {
+  return true;
+}
 
 double initialise() {
   if (isInitialised()) {
@@ -164,13 +166,25 @@ int agreeOnExitCode(int code, double patienceSeconds, const std::string& message
 
 #else
 
-bool built() { return false; }
-double initialise() { return 0.0; }
+bool built() {
+  return false;
+}
+double initialise() {
+  return 0.0;
+}
 void finalise() {}
-int rank() { return 0; }
-int size() { return 1; }
-int fortranWorld() { return -987654; } // the sequential MUMPS's code for its own world
-int fortranSelf() { return -987654; }
+int rank() {
+  return 0;
+}
+int size() {
+  return 1;
+}
+int fortranWorld() {
+  return -987654;
+} // the sequential MUMPS's code for its own world
+int fortranSelf() {
+  return -987654;
+}
 void broadcast(double*, long long) {}
 void broadcast(int*, long long) {}
 void sumInPlace(double*, long long) {}
@@ -179,7 +193,9 @@ void abortAll(int code, const std::string& message) {
   std::fflush(stderr);
   std::_Exit(code);
 }
-int agreeOnExitCode(int code, double, const std::string&) { return code; }
+int agreeOnExitCode(int code, double, const std::string&) {
+  return code;
+}
 
 #endif
 

@@ -4,9 +4,9 @@
 #include "solver/job/BatchJob.hpp"
 #include "solver/job/Confine.hpp"
 #include "solver/job/ExportParameters.hpp"
+#include "solver/nonlinear/ProgressLine.hpp"
 #include "solver/parallel/Launch.hpp"
 #include "solver/parallel/Mpi.hpp"
-#include "solver/nonlinear/ProgressLine.hpp"
 #include "solver/session/ExceptionDiagnostic.hpp"
 
 #include <charconv>
@@ -48,11 +48,13 @@ void printOutcome(const JobResult& job) {
 int relaunch(const Export& study, int processes, const RunArguments& args) {
   if (!mpi::built()) {
     std::cerr << formatDiagnostic(
-        Diagnostic::fatal("EXPORT_12", "P mpi_nbcpu " + std::to_string(processes) +
-                                           ": this stella was built without MPI (STELLA_MPI off, or OpenMPI and "
-                                           "the parallel MUMPS missing)")
-            .withNote(study.file.string() + ": remove the line, or build stella with MPI "
-                                            "(tools/install-deps installs mpi-default-dev and libmumps-dev)"));
+        Diagnostic::fatal("EXPORT_12",
+                          "P mpi_nbcpu " + std::to_string(processes) +
+                              ": this stella was built without MPI (STELLA_MPI off, or OpenMPI and "
+                              "the parallel MUMPS missing)")
+            .withNote(study.file.string() +
+                      ": remove the line, or build stella with MPI "
+                      "(tools/install-deps installs mpi-default-dev and libmumps-dev)"));
     return exitInput;
   }
   const std::string reason = mpi::relaunchUnderMpirun(processes, args.arguments);
