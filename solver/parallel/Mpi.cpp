@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
 #include <thread>
 
 #ifdef STELLA_HAVE_MPI
@@ -22,6 +23,15 @@ int environmentNumber(const char* name, int fallback) {
 
 #ifdef STELLA_HAVE_MPI
 bool initialisedHere = false;
+// stella's own collectives (the solution's broadcast) and the agreement at the end of a run, each
+// on a duplicate of the world: an agreement of a process that failed alone must never match a
+// collective of MUMPS (whose MPI_Comm_dup on the world runs an allreduce) or of another phase.
+MPI_Comm dataComm = MPI_COMM_NULL;
+MPI_Comm agreementComm = MPI_COMM_NULL;
+
+MPI_Comm data() {
+  return dataComm != MPI_COMM_NULL ? dataComm : MPI_COMM_WORLD;
+}
 
 bool isInitialised() {
   int flag = 0;
@@ -41,6 +51,14 @@ std::string partitioningNote() {
   return " (every process reads the mesh and the command files and assembles the whole matrix; MUMPS "
          "factorises and solves on all of them, the entries given distributed, ICNTL(18)=3; rank 0 writes "
          "the files)";
+}
+
+void failIfInjected(const char* where) {
+  const char* text = std::getenv("STELLA_MPI_FAIL_RANK");
+  if (text != nullptr && *text != '\0' && size() > 1 && std::atoi(text) == rank()) {
+    throw std::runtime_error(std::string("fault injected on MPI rank ") + text + " in " + where +
+                             " (STELLA_MPI_FAIL_RANK)");
+  }
 }
 
 bool underLauncher() {
@@ -79,11 +97,18 @@ double initialise() {
   int provided = 0;
   MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
   initialisedHere = true;
+  MPI_Comm_dup(MPI_COMM_WORLD, &dataComm);
+  MPI_Comm_dup(MPI_COMM_WORLD, &agreementComm);
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void finalise() {
   if (initialisedHere && isInitialised()) {
+    for (MPI_Comm* comm : {&dataComm, &agreementComm}) {
+      if (*comm != MPI_COMM_NULL) {
+        MPI_Comm_free(comm);
+      }
+    }
     MPI_Finalize();
   }
 }
@@ -118,19 +143,19 @@ int fortranSelf() {
 
 void broadcast(double* values, long long count) {
   if (size() > 1 && count > 0) {
-    MPI_Bcast(values, static_cast<int>(count), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+    MPI_Bcast(values, static_cast<int>(count), MPI_DOUBLE, 0, data());
   }
 }
 
 void broadcast(int* values, long long count) {
   if (size() > 1 && count > 0) {
-    MPI_Bcast(values, static_cast<int>(count), MPI_INT, 0, MPI_COMM_WORLD);
+    MPI_Bcast(values, static_cast<int>(count), MPI_INT, 0, data());
   }
 }
 
 void sumInPlace(double* values, long long count) {
   if (size() > 1 && count > 0) {
-    MPI_Allreduce(MPI_IN_PLACE, values, static_cast<int>(count), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    MPI_Allreduce(MPI_IN_PLACE, values, static_cast<int>(count), MPI_DOUBLE, MPI_SUM, data());
   }
 }
 
@@ -144,12 +169,12 @@ void abortAll(int code, const std::string& message) {
 }
 
 int agreeOnExitCode(int code, double patienceSeconds, const std::string& message) {
-  if (!isInitialised() || size() < 2) {
+  if (!isInitialised() || size() < 2 || agreementComm == MPI_COMM_NULL) {
     return code;
   }
   int largest = code;
   MPI_Request request = MPI_REQUEST_NULL;
-  MPI_Iallreduce(&code, &largest, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD, &request);
+  MPI_Iallreduce(&code, &largest, 1, MPI_INT, MPI_MAX, agreementComm, &request);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(patienceSeconds);
   for (;;) {
     int done = 0;

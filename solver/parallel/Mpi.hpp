@@ -43,6 +43,10 @@ void sumInPlace(double* values, long long count);
 // Ends every process of the world with `code` (MPI_Abort), after this process's `message` went
 // to the standard error; in a world of one, std::_Exit(code).
 [[noreturn]] void abortAll(int code, const std::string& message);
+// The fault injection of the test mpi.failure-one-rank: when the environment variable
+// STELLA_MPI_FAIL_RANK names this process's rank (a world of more than one), throws
+// std::runtime_error naming `where`, as a failure of that process alone would.
+void failIfInjected(const char* where);
 // At the end of a run: every rank gives its exit code and gets the largest. A rank that arrives
 // when another never will (it failed alone and stopped, or hangs in a collective) is ended with
 // every other by MPI_Abort after `patienceSeconds`, with `message` on its standard error.
