@@ -106,7 +106,17 @@ public:
   std::string_view backendName() const override { return "MUMPS"; }
   double factorisationFlops() const override { return factorised_ ? id_.rinfog[2] : 0.0; } // RINFOG(3)
   std::string orderingUsed() const override { return orderingName(id_.infog[6]); }         // INFOG(7)
-  std::string summary() const override { return factorised_ ? mumpsSummary(id_, options_.mumps) : ""; }
+  std::string summary() const override {
+    if (!factorised_) {
+      return "";
+    }
+    std::string s = mumpsSummary(id_, options_.mumps);
+    if (distributed_) { // the load balance of the last factorisation (RINFO(3), INFOG(21))
+      s += ", on " + std::to_string(mpi::size()) + " processes: the busiest did " + fmtReal(busiestFlops_) +
+           " flops and used " + std::to_string(id_.infog[20]) + " MB (INFOG(21))";
+    }
+    return s;
+  }
   long long mumpsInfog(int i) const override { return id_.infog[i - 1]; }
 
   void analyse(const SparseMatrix& a) override {
@@ -150,6 +160,9 @@ public:
     }
     check("factorisation");
     factorised_ = true;
+    if (distributed_) {
+      busiestFlops_ = mpi::maxOver(id_.rinfo[2]); // RINFO(3): this process's factorisation flops
+    }
     if (options_.stopIfSingular && id_.infog[27] > 0) { // INFOG(28): null pivots found
       int equation = mpi::rank() == 0 && id_.pivnul_list != nullptr ? id_.pivnul_list[0] - 1 : -1;
       mpi::broadcast(&equation, 1); // PIVNUL_LIST is on the host
@@ -266,6 +279,7 @@ private:
 
   SolverOptions options_;
   bool distributed_ = false;
+  double busiestFlops_ = 0.0;
   DMUMPS_STRUC_C id_;
   bool initialised_ = false;
   bool factorised_ = false;

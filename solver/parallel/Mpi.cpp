@@ -159,6 +159,13 @@ void sumInPlace(double* values, long long count) {
   }
 }
 
+double maxOver(double value) {
+  if (size() > 1) {
+    MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MAX, data());
+  }
+  return value;
+}
+
 void abortAll(int code, const std::string& message) {
   std::fprintf(stderr, "%s", message.c_str());
   std::fflush(stderr);
@@ -213,6 +220,9 @@ int fortranSelf() {
 void broadcast(double*, long long) {}
 void broadcast(int*, long long) {}
 void sumInPlace(double*, long long) {}
+double maxOver(double value) {
+  return value;
+}
 void abortAll(int code, const std::string& message) {
   std::fprintf(stderr, "%s", message.c_str());
   std::fflush(stderr);

@@ -38,6 +38,8 @@ std::string partitioningNote();
 // Rank 0's values to every rank (a no-op in a world of one).
 void broadcast(double* values, long long count);
 void broadcast(int* values, long long count);
+// The largest of the ranks' values (a collective call).
+double maxOver(double value);
 // The element-wise sum over the ranks, in place.
 void sumInPlace(double* values, long long count);
 // Ends every process of the world with `code` (MPI_Abort), after this process's `message` went
