@@ -8,6 +8,7 @@
 #include "solver/linalg/MumpsControlsApply.hpp"
 #include "solver/linalg/MumpsCoordinates.hpp"
 #include "solver/linalg/MumpsFactorise.hpp"
+#include "solver/linalg/MumpsOrderings.hpp"
 #include "solver/parallel/Mpi.hpp"
 
 #include <dmumps_c.h>
@@ -19,6 +20,14 @@
 #include <utility>
 #include <vector>
 
+namespace stella::linalg {
+
+bool mumpsOrderingAvailable(std::string_view renum) {
+  return !(mpi::built() && renum == "SCOTCH");
+}
+
+} // namespace stella::linalg
+
 namespace stella::linalg::detail {
 namespace {
 
@@ -28,6 +37,11 @@ constexpr int jobInit = -1, jobEnd = -2, jobAnalyse = 1, jobSolve = 3;
 // choice: INFOG(7) tells), so the catalogue refuses RENUM='METIS' for MUMPS; PARMETIS and
 // PTSCOTCH are parallel orderings (refused there too).
 int orderingCode(const std::string& renum) {
+  if (!mumpsOrderingAvailable(renum)) {
+    throw LinearSolverError("MUMPS: RENUM='" + renum +
+                            "' is not available in the parallel MUMPS of this build (built without "
+                            "SCOTCH): AMD, AMF, PORD, QAMD or AUTO");
+  }
   static const std::pair<const char*, int> codes[] = {{"AMD", 0},   {"AMF", 2},  {"SCOTCH", 3}, {"PORD", 4},
                                                       {"METIS", 5}, {"QAMD", 6}, {"AUTO", 7}};
   for (const auto& [name, code] : codes) {

@@ -8,6 +8,8 @@
 #
 #   run.sh STELLA WORK [N_CUBE [NB NH]]   N_CUBE: cells per side of the cube (default 32: 107 811
 #                                         DOFs), NB NH: of the two blocks (default 23 24)
+#   NPS="1 2 4" in the environment: the process counts (default "1 2"); beyond the cores,
+#   --oversubscribe: the times mean nothing then, MUMPS's flops per process (the load balance) do.
 # OPENBLAS_NUM_THREADS=1 (one thread per process: the two processes use the two cores).
 set -euo pipefail
 stella=$(realpath "$1")
@@ -54,7 +56,7 @@ COMM
 for study in elastic contact; do
   mesh=cube.msh
   [[ $study == contact ]] && mesh=blocks.msh
-  for np in 1 2; do
+  for np in ${NPS:-1 2}; do
     tag="$study.np$np"
     cat > "$work/$tag.export" << EXP
 F comm $study.comm D 1
@@ -63,7 +65,7 @@ F mess $tag.mess R 6
 F resu $tag.resu R 8
 EXP
     rm -f "$work/$tag".time.*
-    launcher=(mpirun -n "$np")
+    launcher=(mpirun -n "$np" --oversubscribe)
     [[ $(id -u) == 0 ]] && launcher+=(--allow-run-as-root)
     start=$(date +%s.%N)
     "${launcher[@]}" sh -c 'exec /usr/bin/time -f "%e %M" -o "$0.$OMPI_COMM_WORLD_RANK" "$@"' \
@@ -71,7 +73,7 @@ EXP
     end=$(date +%s.%N)
     rss=$(for f in "$work/$tag".time.*; do awk '{printf "%.0f", $2 / 1024}' "$f"; echo -n ","; done)
     phases=$(grep -m1 "phases (s):" "$work/$tag.mess" | sed 's/^ *//' | tr -s ' ' || true)
-    mumps=$(grep -m1 -i "MUMPS.*flops\|flops.*MUMPS" "$work/$tag.mess" | sed 's/^ *//' | tr -s ' ' || true)
+    mumps=$(grep "MUMPS in core\|MUMPS out of core" "$work/$tag.mess" | tail -1 | sed 's/^ *//' | tr -s ' ' || true)
     diag=$(grep -o "stella: diagnostic [A-Z_<>]*" "$work/$tag.out" | head -1)
     echo "study=$study np=$np wall_s=$(echo "$end - $start" | bc) rank_rss_mb=${rss%,} $diag | $phases | $mumps"
   done
