@@ -4,7 +4,6 @@
 // "second signal stops at once" rule of StopRequest keeps its meaning.
 
 #include "JobSpec.hpp"
-#include "solver/parallel/Mpi.hpp"
 
 #include <cerrno>
 #include <csignal>
@@ -159,7 +158,9 @@ std::string readAll(int fd) {
   std::cout.flush();
   std::cerr.flush();
   std::fflush(nullptr);
-  mpi::finalise(); // MPI, when a MUMPS call of the run initialised it (a world of one)
+  // No MPI_Finalize: a world of one without a daemon ends with the process, and MPI_Finalize
+  // runs the parallel HDF5's termination (MED), which crashed after a failed MED write
+  // (faults.full-disk).
   _exit(0);
 }
 
