@@ -8,7 +8,8 @@
 #
 #   run.sh STELLA WORK [N_CUBE [NB NH]]   N_CUBE: cells per side of the cube (default 32: 107 811
 #                                         DOFs), NB NH: of the two blocks (default 23 24)
-#   NPS="1 2 4" in the environment: the process counts (default "1 2"); beyond the cores,
+#   NPS="1 2 4" in the environment: the process counts (default "1 2"), STUDIES="elastic" the
+#   studies (default "elastic contact"); beyond the cores,
 #   --oversubscribe: the times mean nothing then, MUMPS's flops per process (the load balance) do.
 # OPENBLAS_NUM_THREADS=1 (one thread per process: the two processes use the two cores).
 set -euo pipefail
@@ -53,7 +54,7 @@ IMPR_RESU(FORMAT='RESULTAT', RESU=_F(RESULTAT=RESU, NOM_CHAM='DEPL', GROUP_NO='H
 FIN()
 COMM
 
-for study in elastic contact; do
+for study in ${STUDIES:-elastic contact}; do
   mesh=cube.msh
   [[ $study == contact ]] && mesh=blocks.msh
   for np in ${NPS:-1 2}; do
@@ -79,7 +80,7 @@ EXP
   done
 done
 # The two runs' printed displacements (IMPR_RESU of the loaded face, the slave face) compared.
-for study in elastic contact; do
+for study in ${STUDIES:-elastic contact}; do
   /usr/bin/python3 - "$work/$study.np1.resu" "$work/$study.np2.resu" << 'PY'
 import re, sys
 numbers = lambda path: [float(x) for x in re.findall(r"[-+]?\d\.\d+[eE][-+]\d+", open(path).read())]
