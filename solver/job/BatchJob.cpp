@@ -521,7 +521,7 @@ JobResult rescueCrashedRun(const JobSpec& spec, const RunOptions& options, const
 namespace {
 
 JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
-  if (mpi::underLauncher()) { // a process of mpirun -n N: MpiRun.cpp
+  if (mpi::built() && mpi::underLauncher()) { // a process of mpirun -n N: MpiRun.cpp
     const RunOptions own = rankOptions(options);
     return runOnRanks(spec, own, makeWorkDirectory(own));
   }
