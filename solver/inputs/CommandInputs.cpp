@@ -1,6 +1,7 @@
 // CommandInputs: EXCIT, MODELE, CHAM_MATER and SOLVEUR of the static drivers.
 
 #include "solver/inputs/CommandInputs.hpp"
+#include "solver/linalg/MumpsOrderings.hpp"
 
 #include "interpreter/Diagnostics.hpp"
 #include "messages/Messages.hpp"
@@ -111,6 +112,17 @@ linalg::SolverOptions readSolverOptions(const KeywordTree& keywords) {
   }
   o.method = *m;
   o.renumbering = s.textOr("RENUM", o.renumbering);
+  if (o.method == linalg::SolverMethod::Mumps && !linalg::mumpsOrderingAvailable(o.renumbering)) {
+    // RUN_9, about the machine like RUN_8: the study is valid, this build's MUMPS lacks the ordering
+    throw UserError(
+        Diagnostic::fatal("RUN_9",
+                          fmt::format("SOLVEUR RENUM='{}' is not available: this stella links the "
+                                      "parallel MUMPS (STELLA_MPI), built without SCOTCH",
+                                      o.renumbering),
+                          s.locationOf("RENUM"))
+            .withNote("use RENUM='AUTO' (the default), 'AMD', 'AMF', 'PORD' or 'QAMD', or build "
+                      "stella with -DSTELLA_MPI=OFF (the sequential MUMPS has SCOTCH)"));
+  }
   o.nprec = static_cast<int>(s.integerOr("NPREC", o.nprec));
   o.pivotPercent = static_cast<double>(s.integerOr("PCENT_PIVOT", static_cast<std::int64_t>(o.pivotPercent)));
   const bool iterative = o.method == linalg::SolverMethod::Gcpc || o.method == linalg::SolverMethod::Petsc;

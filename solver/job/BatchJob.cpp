@@ -8,6 +8,7 @@
 #include "interpreter/Interpreter.hpp"
 #include "messages/Messages.hpp"
 #include "solver/linalg/BlasThreads.hpp"
+#include "solver/parallel/Mpi.hpp"
 #include "solver/session/ExceptionDiagnostic.hpp"
 #include "solver/session/MemoryLimit.hpp"
 #include "solver/session/Session.hpp"
@@ -80,6 +81,7 @@ void writeHeader(std::ostream& mess, const RunOptions& options, const fs::path& 
        << "   host          : " << hostName() << "\n"
        << "   command line  : " << options.commandLine << "\n"
        << "   work directory: " << work.string() << "\n"
+       << (mpi::built() ? fmt::format("   MPI processes: {}{}\n", mpi::size(), mpi::partitioningNote()) : "")
        << std::string(72, '=') << "\n";
 }
 
@@ -503,6 +505,10 @@ JobResult rescueCrashedRun(const JobSpec& spec, const RunOptions& options, const
 namespace {
 
 JobResult runSpec(const JobSpec& spec, const RunOptions& options) {
+  if (mpi::built() && mpi::underLauncher()) { // a process of mpirun -n N: MpiRun.cpp
+    const RunOptions own = rankOptions(options);
+    return runOnRanks(spec, own, makeWorkDirectory(own));
+  }
   fs::path work = makeWorkDirectory(options);
   return options.supervised ? runSupervised(spec, options, work) : runInWork(spec, options, work);
 }

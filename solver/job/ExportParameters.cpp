@@ -67,4 +67,10 @@ int cpusOf(const Export& study) {
   return static_cast<int>(numberParameter(study, rule).value_or(1.0));
 }
 
+int mpiProcessesOf(const Export& study) {
+  static const NumberRule rule{"mpi_nbcpu", "EXPORT_12", "one whole number of MPI processes from 1 to 1024",
+                               "2",         true,        [](double n) { return n >= 1.0 && n <= 1024.0; }};
+  return static_cast<int>(numberParameter(study, rule).value_or(1.0));
+}
+
 } // namespace stella

@@ -18,4 +18,8 @@ double memoryLimitOf(const Export& study);
 // chunks); 1 when absent.
 int cpusOf(const Export& study);
 
+// P mpi_nbcpu <n> (EXPORT_12): the MPI processes of the run; stella started without mpirun starts
+// itself again under mpirun with that many (doc/parallel.md); 1 when absent.
+int mpiProcessesOf(const Export& study);
+
 } // namespace stella

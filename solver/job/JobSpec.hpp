@@ -47,4 +47,9 @@ JobResult rescueCrashedRun(const JobSpec& spec, const RunOptions& options, const
 // run when the child dies on a signal.
 JobResult runSupervised(const JobSpec& spec, const RunOptions& options, const std::filesystem::path& work);
 
+// Under mpirun (MpiRun.cpp): the options of this process (no fork, rank 0 alone echoes, a
+// --work-dir of its own per rank), and the run of one process of the MPI job in `work`.
+RunOptions rankOptions(const RunOptions& options);
+JobResult runOnRanks(const JobSpec& spec, const RunOptions& options, const std::filesystem::path& work);
+
 } // namespace stella

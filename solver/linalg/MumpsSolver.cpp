@@ -1,28 +1,47 @@
-// MUMPS backend (sequential library, double precision C interface).
+// MUMPS backend (double precision C interface): the sequential library, or the parallel one on
+// the MPI world of the run (solver/parallel/Mpi.hpp). On more than one process the matrix goes
+// to MUMPS distributed (ICNTL(18) = 3: each process gives its share of the entries, MUMPS sums
+// duplicates), the right-hand sides on the host (rank 0), the solution comes back centralised on
+// the host (ICNTL(21) = 0) and is broadcast to every process.
 
 #include "solver/linalg/Backends.hpp"
 #include "solver/linalg/MumpsControlsApply.hpp"
 #include "solver/linalg/MumpsCoordinates.hpp"
 #include "solver/linalg/MumpsFactorise.hpp"
+#include "solver/linalg/MumpsOrderings.hpp"
+#include "solver/parallel/Mpi.hpp"
 
 #include <dmumps_c.h>
 
 #include <cmath>
+#include <exception>
 #include <new>
 #include <string>
 #include <utility>
 #include <vector>
 
+namespace stella::linalg {
+
+bool mumpsOrderingAvailable(std::string_view renum) {
+  return !(mpi::built() && renum == "SCOTCH");
+}
+
+} // namespace stella::linalg
+
 namespace stella::linalg::detail {
 namespace {
 
 constexpr int jobInit = -1, jobEnd = -2, jobAnalyse = 1, jobSolve = 3;
-constexpr int useCommWorld = -987654; // MUMPS's code for the (sequential) world communicator
 
 // RENUM -> ICNTL(7). Debian 12's sequential MUMPS has no METIS (it falls back to its automatic
 // choice: INFOG(7) tells), so the catalogue refuses RENUM='METIS' for MUMPS; PARMETIS and
 // PTSCOTCH are parallel orderings (refused there too).
 int orderingCode(const std::string& renum) {
+  if (!mumpsOrderingAvailable(renum)) {
+    throw LinearSolverError("MUMPS: RENUM='" + renum +
+                            "' is not available in the parallel MUMPS of this build (built without "
+                            "SCOTCH): AMD, AMF, PORD, QAMD or AUTO");
+  }
   static const std::pair<const char*, int> codes[] = {{"AMD", 0},   {"AMF", 2},  {"SCOTCH", 3}, {"PORD", 4},
                                                       {"METIS", 5}, {"QAMD", 6}, {"AUTO", 7}};
   for (const auto& [name, code] : codes) {
@@ -60,7 +79,8 @@ public:
   MumpsSolver(const SolverOptions& o, MatrixKind k) : LinearSolver(k), options_(o) {
     const int ordering = orderingCode(o.renumbering); // before the instance exists: may throw
     id_ = {};
-    id_.comm_fortran = useCommWorld;
+    id_.comm_fortran = mpi::fortranWorld();
+    distributed_ = mpi::size() > 1;
     id_.par = 1;
     // SYM=2 (general symmetric) also for positive definite matrices: with SYM=1 the null-pivot
     // detection of ICNTL(24) let a floating structure through in our tests.
@@ -76,6 +96,7 @@ public:
     id_.icntl[2] = -1;
     id_.icntl[3] = 0;
     id_.icntl[6] = ordering;                                       // ICNTL(7)
+    id_.icntl[17] = distributed_ ? 3 : 0;                          // ICNTL(18): distributed entries
     id_.icntl[13] = static_cast<int>(std::lround(o.pivotPercent)); // ICNTL(14)
     // ICNTL(24): null pivot detection, with the relative threshold CNTL(3) = 10^-NPREC; a
     // negative NPREC turns it off (code_aster's convention): MUMPS then only fails on a pivot
@@ -86,7 +107,9 @@ public:
     initialised_ = true;
   }
   ~MumpsSolver() override {
-    if (initialised_) {
+    // JOB=-2 is collective: on several processes, an exception of this process alone (the others
+    // inside a MUMPS call) would hang here; the instance is left to the end of the process.
+    if (initialised_ && !(distributed_ && std::uncaught_exceptions() > 0)) {
       id_.job = jobEnd;
       dmumps_c(&id_);
     }
@@ -97,7 +120,17 @@ public:
   std::string_view backendName() const override { return "MUMPS"; }
   double factorisationFlops() const override { return factorised_ ? id_.rinfog[2] : 0.0; } // RINFOG(3)
   std::string orderingUsed() const override { return orderingName(id_.infog[6]); }         // INFOG(7)
-  std::string summary() const override { return factorised_ ? mumpsSummary(id_, options_.mumps) : ""; }
+  std::string summary() const override {
+    if (!factorised_) {
+      return "";
+    }
+    std::string s = mumpsSummary(id_, options_.mumps);
+    if (distributed_) { // the load balance of the last factorisation (RINFO(3), INFOG(21))
+      s += ", on " + std::to_string(mpi::size()) + " processes: the busiest did " + fmtReal(busiestFlops_) +
+           " flops and used " + std::to_string(id_.infog[20]) + " MB (INFOG(21))";
+    }
+    return s;
+  }
   long long mumpsInfog(int i) const override { return id_.infog[i - 1]; }
 
   void analyse(const SparseMatrix& a) override {
@@ -107,13 +140,18 @@ public:
     const SparsePattern& p = a.pattern();
     mumpsCoordinates(p, irn_, jcn_);
     id_.n = p.size;
-    id_.nnz = p.nonZeros();
-    id_.irn = irn_.data();
-    id_.jcn = jcn_.data();
     // The values of this matrix, for the analysis's numerical preprocessing (weighted matching and
     // scaling, 2x2 pivots of the multipliers). Never the pointer of an earlier factorisation: a
     // re-analysis after a pattern change read that stale array (INFOG(1) = -6 on penalised contact).
-    id_.a = a.values().size() == irn_.size() ? const_cast<double*>(a.values().data()) : nullptr;
+    const bool withValues = a.values().size() == irn_.size();
+    if (distributed_) {
+      giveLocalEntries(withValues ? a.values().data() : nullptr);
+    } else {
+      id_.nnz = p.nonZeros();
+      id_.irn = irn_.data();
+      id_.jcn = jcn_.data();
+      id_.a = withValues ? const_cast<double*>(a.values().data()) : nullptr;
+    }
     id_.job = jobAnalyse;
     dmumps_c(&id_);
     check("analysis");
@@ -121,7 +159,12 @@ public:
   }
 
   void factorise(const SparseMatrix& a) override {
-    id_.a = const_cast<double*>(a.values().data()); // MUMPS does not modify A
+    mpi::failIfInjected("the MUMPS factorisation"); // the test of a failure on one process
+    if (distributed_) {
+      giveLocalEntries(a.values().data());
+    } else {
+      id_.a = const_cast<double*>(a.values().data()); // MUMPS does not modify A
+    }
     if (options_.nprec >= 0) {
       id_.cntl[2] = std::pow(10.0, -options_.nprec) / penaltyRatio_; // CNTL(3), see setPenaltyRatio
     }
@@ -131,8 +174,13 @@ public:
     }
     check("factorisation");
     factorised_ = true;
+    if (distributed_) {
+      busiestFlops_ = mpi::maxOver(id_.rinfo[2]); // RINFO(3): this process's factorisation flops
+    }
     if (options_.stopIfSingular && id_.infog[27] > 0) { // INFOG(28): null pivots found
-      throw SingularMatrixError("MUMPS", id_.pivnul_list != nullptr ? id_.pivnul_list[0] - 1 : -1);
+      int equation = mpi::rank() == 0 && id_.pivnul_list != nullptr ? id_.pivnul_list[0] - 1 : -1;
+      mpi::broadcast(&equation, 1); // PIVNUL_LIST is on the host
+      throw SingularMatrixError("MUMPS", equation);
     }
   }
 
@@ -140,7 +188,10 @@ public:
     if (rhs.rows() != id_.n) {
       throw LinearSolverError("MUMPS: right-hand side size differs from the matrix size");
     }
-    if (isSparse(rhs)) {
+    // On several processes the parallel MUMPS 5.5.1 refused the sparse right-hand sides with a
+    // centralised solution (INFOG(1) = -22, INFOG(2) = 7, hertz_cylinder under mpirun -n 2): the
+    // dense block, the same solution, more work in the forward substitution.
+    if (!distributed_ && isSparse(rhs)) {
       solveSparse(rhs);
       return;
     }
@@ -152,6 +203,7 @@ public:
     dmumps_c(&id_);
     check("solution");
     checkBackwardError();
+    mpi::broadcast(b.data(), b.size()); // the host's solution (ICNTL(21) = 0) to every process
     rhs = b;
   }
 
@@ -199,6 +251,7 @@ private:
     id_.irhs_sparse = nullptr;
     id_.irhs_ptr = nullptr;
     check("solution (sparse right-hand sides)");
+    mpi::broadcast(x.data(), x.size());
     rhs = x;
   }
 
@@ -226,7 +279,21 @@ private:
     }
   }
 
+  // ICNTL(18) = 3: this process's share of the entries, a contiguous slice of the pattern (every
+  // process holds the whole matrix: the assembly is replicated); `values` null: pattern only.
+  void giveLocalEntries(const double* values) {
+    const long long total = static_cast<long long>(irn_.size());
+    const long long first = total * mpi::rank() / mpi::size();
+    const long long last = total * (mpi::rank() + 1) / mpi::size();
+    id_.nnz_loc = last - first;
+    id_.irn_loc = irn_.data() + first;
+    id_.jcn_loc = jcn_.data() + first;
+    id_.a_loc = values != nullptr ? const_cast<double*>(values) + first : nullptr;
+  }
+
   SolverOptions options_;
+  bool distributed_ = false;
+  double busiestFlops_ = 0.0;
   DMUMPS_STRUC_C id_;
   bool initialised_ = false;
   bool factorised_ = false;

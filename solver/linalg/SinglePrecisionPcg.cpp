@@ -8,6 +8,7 @@
 #include "solver/linalg/MumpsControlsApply.hpp"
 #include "solver/linalg/MumpsCoordinates.hpp"
 #include "solver/linalg/MumpsFactorise.hpp"
+#include "solver/parallel/Mpi.hpp"
 
 #include <smumps_c.h>
 
@@ -20,14 +21,14 @@ namespace stella::linalg::detail {
 namespace {
 
 constexpr int jobInit = -1, jobEnd = -2, jobAnalyse = 1, jobSolve = 3;
-constexpr int useCommWorld = -987654;
 
 class SinglePrecisionPcg final : public LinearSolver {
 public:
   explicit SinglePrecisionPcg(const SolverOptions& o)
       : LinearSolver(MatrixKind::SymmetricPositiveDefinite), options_(o) {
     id_ = {};
-    id_.comm_fortran = useCommWorld;
+    // Under MPI each process keeps its own preconditioner (the CG runs on every process alike).
+    id_.comm_fortran = mpi::fortranSelf();
     id_.par = 1;
     id_.sym = 1; // SPD: LL^T without pivoting
     id_.job = jobInit;

@@ -18,7 +18,8 @@ struct RunArguments {
   bool quiet = false;
   bool confine = false; // refuse data and result paths outside the study's folder
   std::string commandLine;
-  long long maxOperations = 0; // the evaluation budget (0: the default, doc/language.md)
+  std::vector<std::string> arguments; // argv, to start again under mpirun (P mpi_nbcpu)
+  long long maxOperations = 0;        // the evaluation budget (0: the default, doc/language.md)
   long long maxMemoryMiB = 0;
 };
 int run(const RunArguments& args);

@@ -4,7 +4,10 @@
 #include "messages/Messages.hpp"
 #include "solver/job/BatchJob.hpp"
 #include "solver/job/Confine.hpp"
+#include "solver/job/ExportParameters.hpp"
 #include "solver/nonlinear/ProgressLine.hpp"
+#include "solver/parallel/Launch.hpp"
+#include "solver/parallel/Mpi.hpp"
 #include "solver/session/ExceptionDiagnostic.hpp"
 
 #include <charconv>
@@ -42,6 +45,24 @@ void printOutcome(const JobResult& job) {
   }
 }
 
+// P mpi_nbcpu N > 1 without mpirun: this stella again under mpirun -n N (doc/parallel.md).
+int relaunch(const Export& study, int processes, const RunArguments& args) {
+  if (!mpi::built()) {
+    std::cerr << formatDiagnostic(
+        Diagnostic::fatal("EXPORT_12",
+                          "P mpi_nbcpu " + std::to_string(processes) +
+                              ": this stella was built without MPI (STELLA_MPI off, or OpenMPI and "
+                              "the parallel MUMPS missing)")
+            .withNote(study.file.string() +
+                      ": remove the line, or build stella with MPI "
+                      "(tools/install-deps installs mpi-default-dev and libmumps-dev)"));
+    return exitInput;
+  }
+  const std::string reason = mpi::relaunchUnderMpirun(processes, args.arguments);
+  std::cerr << "stella: P mpi_nbcpu " << processes << ": " << reason << "\n";
+  return exitInput;
+}
+
 } // namespace
 
 int run(const RunArguments& args) {
@@ -69,6 +90,9 @@ int run(const RunArguments& args) {
         return exitUsage;
       }
       Export study = Export::read(target);
+      if (const int processes = mpiProcessesOf(study); processes > 1 && !mpi::underLauncher()) {
+        return relaunch(study, processes, args);
+      }
       if (args.confine) {
         confineExport(study, options.outputDirectory);
       }
@@ -90,7 +114,9 @@ int run(const RunArguments& args) {
       }
       job = runCommandFile(target, units, options);
     }
-    printOutcome(job);
+    if (mpi::rank() == 0) {
+      printOutcome(job);
+    }
     const int code = exitCode(job.diagnostic);
     // A message file that could not be copied back after an OK run is still an error.
     return code == 0 && !job.copyFailures.empty() ? exitCode(JobDiagnostic::Error) : code;

@@ -3,6 +3,7 @@
 
 #include "Commands.hpp"
 #include "interpreter/Suggest.hpp"
+#include "solver/parallel/Mpi.hpp"
 
 #include <cstdio>
 #include <cstdlib>
@@ -78,6 +79,7 @@ int main(int argc, char** argv) {
 
   stella::cli::RunArguments runArgs;
   runArgs.commandLine = joinArguments(argc, argv);
+  runArgs.arguments.assign(argv, argv + argc);
   auto* run = app.add_subcommand("run", "Run a study: a .export file, or a .comm file with --unit");
   run->add_option("study", runArgs.target, "the .export or .comm file")->required()->check(CLI::ExistingFile);
   run->add_option("--unit", runArgs.units, "with a .comm: a data unit, e.g. --unit 20=mesh.med");
@@ -168,7 +170,9 @@ int main(int argc, char** argv) {
   }
 
   if (run->parsed()) {
-    return stella::cli::run(runArgs);
+    const int code = stella::cli::run(runArgs);
+    stella::mpi::finalise(); // when the run initialised MPI
+    return code;
   }
   if (check->parsed()) {
     return stella::cli::check(checkArgs);

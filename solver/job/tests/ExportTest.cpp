@@ -2,6 +2,7 @@
 
 #include "solver/job/Export.hpp"
 #include "solver/job/BatchJob.hpp"
+#include "solver/job/ExportParameters.hpp"
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/linalg/BlasThreads.hpp"
@@ -90,6 +91,20 @@ TEST_F(ExportTest, NcpusIsAWholeNumberOfThreads) {
       ADD_FAILURE() << "P ncpus " << bad << " accepted";
     } catch (const UserError& e) {
       EXPECT_EQ(e.first().id, "EXPORT_10") << bad;
+    }
+  }
+}
+
+// P mpi_nbcpu (doc/parallel.md): a whole number of MPI processes from 1 to 1024, EXPORT_12 else.
+TEST_F(ExportTest, MpiNbcpuIsAWholeNumberOfProcesses) {
+  EXPECT_EQ(mpiProcessesOf(Export::read(write("F comm study.comm D 1\n"))), 1);
+  EXPECT_EQ(mpiProcessesOf(Export::read(write("P mpi_nbcpu 4\nF comm study.comm D 1\n"))), 4);
+  for (const char* bad : {"0", "two", "2.5", "1 2", "2000"}) {
+    try {
+      mpiProcessesOf(Export::read(write(std::string("P mpi_nbcpu ") + bad + "\nF comm study.comm D 1\n")));
+      ADD_FAILURE() << "P mpi_nbcpu " << bad << " accepted";
+    } catch (const UserError& e) {
+      EXPECT_EQ(e.first().id, "EXPORT_12") << bad;
     }
   }
 }
