@@ -55,17 +55,17 @@ if(MED_INCLUDE_DIR AND MED_LIBRARY)
 endif()
 stella_require(MED_FOUND "the MED library (libmedC)" libmedc-dev)
 
-# MPI (issue 21): with STELLA_MPI (on by default, off under the sanitizers, which report
-# OpenMPI's allocations at exit) and OpenMPI plus the parallel MUMPS installed (mpi-default-dev,
-# libmumps-dev), stella links the parallel MUMPS and MPI and runs under `mpirun -n N` or
-# `P mpi_nbcpu N` (doc/parallel.md); otherwise the sequential MUMPS with its fake MPI, as before.
-# The two MUMPS libraries define the same symbols: one executable links one of them.
-set(_stella_mpi_default ON)
-if(STELLA_SANITIZE)
-  set(_stella_mpi_default OFF)
+# MPI (issue 21): with STELLA_MPI=ON and OpenMPI plus the parallel MUMPS installed
+# (mpi-default-dev, libmumps-dev), stella links the parallel MUMPS and MPI and runs under
+# `mpirun -n N` or `P mpi_nbcpu N` (doc/parallel.md); otherwise the sequential MUMPS with its fake
+# MPI. The two MUMPS libraries define the same symbols: one executable links one of them.
+# Off by default: Debian's parallel MUMPS has no SCOTCH (RENUM='SCOTCH' refused, AUTO takes PORD:
+# +30 % factorisation flops on 3D cubes) and a serial run would pay MPI's start-up (0.2 s), so a
+# study on one process would pay for a feature it does not use. tools/test-all builds it beside.
+option(STELLA_MPI "Link MPI and the parallel MUMPS: stella runs under mpirun (doc/parallel.md)" OFF)
+if(STELLA_MPI AND STELLA_SANITIZE)
+  message(FATAL_ERROR "STELLA_MPI with STELLA_SANITIZE: the leak checker reports OpenMPI's allocations at exit")
 endif()
-option(STELLA_MPI "Link MPI and the parallel MUMPS: stella runs under mpirun (doc/parallel.md)"
-       ${_stella_mpi_default})
 set(STELLA_HAVE_MPI FALSE)
 find_path(MUMPS_INCLUDE_DIR dmumps_c.h)
 if(STELLA_MPI)

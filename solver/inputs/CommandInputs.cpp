@@ -114,14 +114,7 @@ linalg::SolverOptions readSolverOptions(const KeywordTree& keywords) {
   o.renumbering = s.textOr("RENUM", o.renumbering);
   if (o.method == linalg::SolverMethod::Mumps && !linalg::mumpsOrderingAvailable(o.renumbering)) {
     // RUN_9, about the machine like RUN_8: the study is valid, this build's MUMPS lacks the ordering
-    throw UserError(
-        Diagnostic::fatal("RUN_9",
-                          fmt::format("SOLVEUR RENUM='{}' is not available: this stella links the "
-                                      "parallel MUMPS (STELLA_MPI), built without SCOTCH",
-                                      o.renumbering),
-                          s.locationOf("RENUM"))
-            .withNote("use RENUM='AUTO' (the default), 'AMD', 'AMF', 'PORD' or 'QAMD', or build "
-                      "stella with -DSTELLA_MPI=OFF (the sequential MUMPS has SCOTCH)"));
+    throw UserError(msg::make("RUN_9", {{"renum", o.renumbering}}, s.locationOf("RENUM")));
   }
   o.nprec = static_cast<int>(s.integerOr("NPREC", o.nprec));
   o.pivotPercent = static_cast<double>(s.integerOr("PCENT_PIVOT", static_cast<std::int64_t>(o.pivotPercent)));

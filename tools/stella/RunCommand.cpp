@@ -49,13 +49,7 @@ void printOutcome(const JobResult& job) {
 int relaunch(const Export& study, int processes, const RunArguments& args) {
   if (!mpi::built()) {
     std::cerr << formatDiagnostic(
-        Diagnostic::fatal("EXPORT_12",
-                          "P mpi_nbcpu " + std::to_string(processes) +
-                              ": this stella was built without MPI (STELLA_MPI off, or OpenMPI and "
-                              "the parallel MUMPS missing)")
-            .withNote(study.file.string() +
-                      ": remove the line, or build stella with MPI "
-                      "(tools/install-deps installs mpi-default-dev and libmumps-dev)"));
+        msg::make("EXPORT_12.2", {{"processes", processes}, {"file", study.file.string()}}));
     return exitInput;
   }
   const std::string reason = mpi::relaunchUnderMpirun(processes, args.arguments);
