@@ -58,7 +58,7 @@ bool CallValidator::refuseNotImplemented(const std::string& name, const SimpleSp
   }
   std::vector<std::string> notes;
   if (s.acceptedValue) {
-    notes.push_back("only " + name + "=" + s.acceptedValue->repr() + " is accepted (or leave it out)");
+    notes.push_back(msg::text("CATALOG_17.n_accepted", {{"name", name}, {"value", s.acceptedValue->repr()}}));
   }
   notImplementedYet("CATALOG_17.keyword", {{"name", name}, {"where", where}}, *s.notImplemented, k.location,
                     std::move(notes));
@@ -112,11 +112,11 @@ void CallValidator::reportNotAllowed(const Level& level, const ActiveSet& active
   std::sort(near.begin(), near.end());
   std::vector<std::string> notes;
   if (!near.empty()) {
-    std::string s = "did you mean ";
+    std::string choices;
     for (std::size_t i = 0; i < near.size() && i < 3; ++i) {
-      s += (i ? " or '" : "'") + near[i].second + "'";
+      choices += (i ? " or '" : "'") + near[i].second + "'";
     }
-    notes.push_back(s + "?");
+    notes.push_back(msg::text("CATALOG_1.n_mean", {{"choices", choices}}));
   }
   std::vector<std::string> allowed;
   for (const Entry* e : active.order) {
@@ -129,12 +129,12 @@ void CallValidator::reportNotAllowed(const Level& level, const ActiveSet& active
       bool found =
           std::any_of(inVariant.begin(), inVariant.end(), [&](const auto& p) { return p.first == k.name; });
       if (found) {
-        notes.push_back(k.name + " belongs to the variant of this factor keyword used when " + condition);
+        notes.push_back(msg::text("CATALOG_1.n_variant", {{"name", k.name}, {"condition", condition}}));
         break;
       }
     }
   }
-  notes.push_back("keywords allowed here: " + joinNames(allowed));
+  notes.push_back(msg::text("CATALOG_1.n_allowed", {{"names", joinNames(allowed)}}));
   error("CATALOG_1", {{"name", k.name}, {"where", where}}, k.location, std::move(notes));
 }
 

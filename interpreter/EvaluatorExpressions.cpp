@@ -3,6 +3,7 @@
 #include "EvaluatorParts.hpp"
 
 #include "Suggest.hpp"
+#include "messages/Messages.hpp"
 
 namespace stella {
 
@@ -177,7 +178,7 @@ std::vector<std::string> Evaluator::visibleNames() const {
 void Evaluator::unknownName(const Expr& e) const {
   std::string note = suggestionNote(e.text, visibleNames());
   if (note.empty() && mathNames().contains(e.text) && lookup_ == nullptr) {
-    note = "'" + e.text + "' is in the math module: add 'from math import " + e.text + "' (or 'import math')";
+    note = msg::text("LANG_NAME.n_math", {{"name", e.text}});
   }
   raise(e.pos, "LANG_NAME", {{"text", e.text}}, note);
 }

@@ -1,6 +1,8 @@
 // Nearest-name suggestions for unknown names and keywords.
 #include "Suggest.hpp"
 
+#include "messages/Messages.hpp"
+
 #include <algorithm>
 #include <cctype>
 
@@ -82,7 +84,7 @@ std::string nearestName(const std::string& name, const std::vector<std::string>&
 
 std::string suggestionNote(const std::string& name, const std::vector<std::string>& candidates) {
   std::string best = nearestName(name, candidates);
-  return best.empty() ? std::string() : "did you mean '" + best + "'?";
+  return best.empty() ? std::string() : msg::text("SUGGEST.n_mean", {{"name", best}});
 }
 
 } // namespace stella

@@ -2,6 +2,7 @@
 
 #include "solver/operators/CoincidentNodesAlarm.hpp"
 
+#include "messages/Messages.hpp"
 #include "solver/mesh/MeshCheck.hpp"
 
 #include <algorithm>
@@ -59,8 +60,7 @@ std::vector<Diagnostic> CoincidentNodesAlarm::diagnostics() const {
   auto ds = meshCheckDiagnostics(names, report);
   for (auto& d : ds) {
     d.location = at_;
-    d.notes.push_back("reported at the end of the study: pairs that a DEFI_CONTACT zone joins (one node on "
-                      "its slave surface, the other on its master surface) are not counted");
+    d.notes.push_back(msg::text("MESHCHECK_1.n_contact"));
   }
   return ds;
 }
