@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -197,15 +198,22 @@ TEST(GreenLagrangeAssembly, TangentEqualsFiniteDifferencesOfTheForces) {
     PointState end = s.zero;
     forces(s, u, &end, &k0);
     const double h = 1e-6;
-    Eigen::MatrixXd fd(k0.rows(), k0.cols());
-    for (Eigen::Index j = 0; j < u.size(); ++j) {
+    const double scale = k0.cwiseAbs().maxCoeff();
+    // about 40 columns, spread over every node and component (each column costs two assemblies:
+    // the whole matrix took minutes under the sanitizers on the quadratic 3D cells)
+    Eigen::Index stride = std::max<Eigen::Index>(1, u.size() / 40);
+    while (stride > 1 && (stride % 2 == 0 || stride % 3 == 0)) { // coprime with 2 and 3: every component
+      ++stride;
+    }
+    double worst = 0.0;
+    for (Eigen::Index j = 0; j < u.size(); j += stride) {
       Eigen::VectorXd up = u, um = u;
       up(j) += h;
       um(j) -= h;
-      fd.col(j) = (forces(s, up) - forces(s, um)) / (2.0 * h);
+      const Eigen::VectorXd fd = (forces(s, up) - forces(s, um)) / (2.0 * h);
+      worst = std::max(worst, (k0.col(j) - fd).cwiseAbs().maxCoeff());
     }
-    const double scale = k0.cwiseAbs().maxCoeff();
-    EXPECT_LT((k0 - fd).cwiseAbs().maxCoeff(), 1e-6 * scale) << label(k);
+    EXPECT_LT(worst, 1e-6 * scale) << label(k);
     // the prediction's tangent at the start u (state `end`) is the same matrix
     std::vector<Eigen::Triplet<double>> t;
     s.system->assembler().run(u, Eigen::VectorXd::Zero(u.size()), end, behaviour::Option::PredictionTangent,
