@@ -5,6 +5,7 @@
 #include "interpreter/Diagnostics.hpp"
 #include "messages/Messages.hpp"
 #include "solver/assembly/VolumeAssembler.hpp"
+#include "solver/fem/CellCoordinates.hpp"
 #include "solver/loads/SkinLoads.hpp"
 
 #include <fmt/format.h>

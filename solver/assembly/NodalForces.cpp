@@ -4,6 +4,7 @@
 
 #include "interpreter/Diagnostics.hpp"
 #include "solver/assembly/VolumeAssembler.hpp"
+#include "solver/fem/CellCoordinates.hpp"
 #include "solver/fem/ElementMatrices.hpp"
 #include "solver/fem/Kinematics.hpp"
 

@@ -4,6 +4,7 @@
 
 #include "interpreter/Diagnostics.hpp"
 #include "messages/Messages.hpp"
+#include "solver/fem/CellCoordinates.hpp"
 #include "solver/fem/ElementMatrices.hpp"
 #include "solver/fem/GreenLagrange.hpp"
 #include "solver/fem/Kinematics.hpp"
@@ -11,18 +12,6 @@
 #include <fmt/format.h>
 
 namespace stella {
-
-Eigen::MatrixXd cellCoordinates(const Mesh& mesh, CellId c, int dim) {
-  const auto nodes = mesh.cellNodes(c);
-  Eigen::MatrixXd x(static_cast<Eigen::Index>(nodes.size()), dim);
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
-    const Point3 p = mesh.point(nodes[i]);
-    for (int d = 0; d < dim; ++d) {
-      x(static_cast<Eigen::Index>(i), d) = p[static_cast<std::size_t>(d)];
-    }
-  }
-  return x;
-}
 
 VolumeAssembler::VolumeAssembler(const Model& model, const DofMap& dofs, const CellBehaviours& behaviours,
                                  const ElementCharacteristics* springs)

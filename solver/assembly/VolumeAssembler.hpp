@@ -60,7 +60,4 @@ private:
   const ElementCharacteristics* springs_;
 };
 
-// Coordinates of a cell's nodes as a (nodes x dim) matrix.
-Eigen::MatrixXd cellCoordinates(const Mesh& mesh, CellId c, int dim);
-
 } // namespace stella

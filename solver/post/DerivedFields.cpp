@@ -4,6 +4,7 @@
 
 #include "interpreter/Diagnostics.hpp"
 #include "messages/Messages.hpp"
+#include "solver/fem/CellCoordinates.hpp"
 #include "solver/fem/GaussExtrapolation.hpp"
 #include "solver/fem/Kinematics.hpp"
 #include "solver/post/TensorInvariants.hpp"
@@ -17,18 +18,6 @@ namespace {
 fem::IntegrationRole volumeRole(const ModelCell& cell) {
   return cell.modelling == fem::Modelling::Axisymmetric ? fem::IntegrationRole::AxisymmetricVolume
                                                         : fem::IntegrationRole::Volume;
-}
-
-Eigen::MatrixXd coordinates(const Mesh& mesh, CellId c, int dim) {
-  const auto nodes = mesh.cellNodes(c);
-  Eigen::MatrixXd x(static_cast<Eigen::Index>(nodes.size()), dim);
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
-    const Point3 p = mesh.point(nodes[i]);
-    for (int d = 0; d < dim; ++d) {
-      x(static_cast<Eigen::Index>(i), d) = p[static_cast<std::size_t>(d)];
-    }
-  }
-  return x;
 }
 
 std::vector<std::string> strainComponents(int dim) {
@@ -149,7 +138,7 @@ Field strainAtGaussPoints(const Model& model, const Field& depl, const MaterialF
     const auto cell = static_cast<CellId>(c);
     const fem::Modelling modelling = model.cell(cell).modelling;
     try {
-      fem::computeKinematics(mesh.cellType(cell), modelling, coordinates(mesh, cell, dim), kin,
+      fem::computeKinematics(mesh.cellType(cell), modelling, cellCoordinates(mesh, cell, dim), kin,
                              model.cell(cell).volumeStrain);
     } catch (const fem::DegenerateElementError& e) {
       throw UserError(msg::make("CALC_8", {{"cell_name", mesh.cellName(cell)},
